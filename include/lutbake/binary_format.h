@@ -1,0 +1,39 @@
+// The .bin table format, version 1. Little-endian throughout; every field at
+// a fixed offset so that it can be read without lutbake (README, "The .bin
+// format", has the same table and a 10-line Python reader).
+//
+//   offset size  type      field
+//   0      8     char[8]   magic "LUTBAKE\0"
+//   8      4     u32       format version (1)
+//   12     4     u32       data offset D: where the values start (a multiple of 8)
+//   16     4     u32       dimensions (1 or 2)
+//   20     4     u32       width  = texel count of axis x
+//   24     4     u32       height = texel count of axis y (1 for a 1D table)
+//   28     4     u32       channels (1, or 2 for dfg: A then B)
+//   32     4     u32       value type (1 = IEEE-754 float32)
+//   36     4     u32       flags (bit 0: an error block follows the values)
+//   40     48    axis x    char[24] name (UTF-8, NUL-padded), f64 min, f64 max,
+//                          u32 count, u32 mapping (0 = linear, texel centres:
+//                          texel i at min + (max - min) (i + 0.5) / count)
+//   88     48    axis y    same; name empty for a 1D table
+//   136    4     u32       metadata length M in bytes
+//   140    M     char[M]   metadata, UTF-8 lines "key=value\n" (EXR attributes)
+//   ...          zero padding up to D
+//   D      4 W H C         values, float32, [y][x][channel], y = 0 first
+//   D+4WHC 4 W H C         error bounds, same layout (when flags bit 0 is set)
+#pragma once
+
+#include <string>
+
+#include "lutbake/table.h"
+
+namespace lutbake {
+
+inline constexpr char kBinaryMagic[8] = {'L', 'U', 'T', 'B', 'A', 'K', 'E', '\0'};
+inline constexpr uint32_t kBinaryVersion = 1;
+
+// Reads a .bin file back into a Table (values and errors as the stored
+// float32, widened). Throws IoError on a malformed or unreadable file.
+Table ReadBinaryTable(const std::string &path);
+
+}  // namespace lutbake

@@ -1,0 +1,64 @@
+// A baked table: its axes (with the texel convention), its values and the
+// per-texel error estimate, and the metadata every writer copies into its file.
+//
+// Texel convention (SPEC section 2): texel x of an axis of N texels holds the
+// value at u = (x + 0.5) / N, mapped linearly onto [min, max]. Values are
+// stored row-major, y (the second axis) outer, x inner, channels interleaved:
+//   values[(y * width + x) * channels + c].
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lutbake {
+
+enum class TableKind { kE, kEavg, kFavg, kDfg };
+
+inline constexpr TableKind kAllTables[] = {TableKind::kE, TableKind::kEavg, TableKind::kFavg,
+                                           TableKind::kDfg};
+
+// "E", "Eavg", "Favg", "dfg": the names used on the command line and in file names.
+const char *TableName(TableKind kind);
+
+struct Axis {
+  std::string name;  // the physical quantity: "mu", "perceptualRoughness", "F0", "eta", "k"
+  double min = 0.0;
+  double max = 1.0;
+  int count = 1;
+
+  // Texel-centre convention: the value of texel i.
+  double TexelCenter(int i) const { return min + (max - min) * ((i + 0.5) / count); }
+  // The inverse: the continuous texel coordinate of a value (i at centres).
+  double TexelCoordinate(double value) const {
+    return (value - min) / (max - min) * count - 0.5;
+  }
+};
+
+struct Table {
+  TableKind kind = TableKind::kE;
+  Axis x;          // width: the first axis (mu, or the Fresnel parameter)
+  Axis y;          // height: perceptual roughness, or the second Fresnel axis;
+                   // a 1D table has y.count = 1 and y.name empty
+  int channels = 1;
+  std::vector<std::string> channelNames;  // EXR channel names: {"Y"} or {"R", "G"}
+  std::vector<double> values;             // see the layout above
+  std::vector<double> errors;             // same layout: estimated error bound per value
+  // Ordered (key, value) pairs: table, ndf, smith, fresnel, estimator, ...
+  std::vector<std::pair<std::string, std::string>> metadata;
+
+  int width() const { return x.count; }
+  int height() const { return y.count; }
+  bool is2D() const { return !y.name.empty(); }
+  size_t index(int ix, int iy, int c) const {
+    return (static_cast<size_t>(iy) * x.count + ix) * channels + c;
+  }
+  double value(int ix, int iy, int c = 0) const { return values[index(ix, iy, c)]; }
+
+  double MaxError() const;
+  double RmsError() const;
+  const std::string *FindMetadata(const std::string &key) const;
+};
+
+}  // namespace lutbake

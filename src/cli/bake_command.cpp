@@ -1,0 +1,303 @@
+#include "bake_command.h"
+
+#include <tbb/global_control.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+#include "lutbake/atomic_output.h"
+#include "lutbake/writer.h"
+
+namespace lutbake::cli {
+
+namespace {
+
+constexpr int kMaxSize = 4096;
+constexpr uint64_t kMaxSamples = uint64_t{1} << 30;
+constexpr int kMaxThreads = 1024;
+
+std::vector<std::string> SplitList(const std::string &list) {
+  std::vector<std::string> items;
+  std::stringstream stream(list);
+  for (std::string item; std::getline(stream, item, ',');) items.push_back(item);
+  if (!list.empty() && list.back() == ',') items.emplace_back();
+  return items;
+}
+
+std::string JoinNames(const std::vector<std::string> &names) {
+  std::string s;
+  for (size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + names[i];
+  return s;
+}
+
+// A validator that accepts one of `names` and says which ones when it fails.
+CLI::Validator OneOf(std::vector<std::string> names) {
+  const std::string accepted = JoinNames(names);
+  return CLI::Validator(
+      [names, accepted](std::string &value) -> std::string {
+        for (const std::string &n : names)
+          if (value == n) return {};
+        return "'" + value + "' is not accepted; accepted: " + accepted;
+      },
+      "one of: " + accepted);
+}
+
+// A comma-separated list of items from `names`, none repeated.
+CLI::Validator ListOf(std::vector<std::string> names) {
+  const std::string accepted = JoinNames(names);
+  return CLI::Validator(
+      [names, accepted](std::string &value) -> std::string {
+        const std::vector<std::string> items = SplitList(value);
+        if (items.empty()) return "empty list; accepted: a comma-separated subset of " + accepted;
+        for (size_t i = 0; i < items.size(); ++i) {
+          bool known = false;
+          for (const std::string &n : names) known = known || items[i] == n;
+          if (!known)
+            return "'" + value + "' names '" + items[i] +
+                   "', which is not accepted; accepted: a comma-separated subset of " + accepted;
+          for (size_t j = 0; j < i; ++j)
+            if (items[j] == items[i]) return "'" + value + "' names '" + items[i] + "' twice";
+        }
+        return {};
+      },
+      "comma-separated subset of: " + accepted);
+}
+
+template <typename T>
+CLI::Validator InRange(T lo, T hi, const std::string &what) {
+  const std::string accepted = std::to_string(lo) + " to " + std::to_string(hi) + " " + what;
+  return CLI::Validator(
+      [lo, hi, accepted](std::string &value) -> std::string {
+        // Reject signs, spaces and trailing text before converting.
+        if (value.empty() || value.find_first_not_of("0123456789") != std::string::npos)
+          return "'" + value + "' is not a whole number; accepted: " + accepted;
+        errno = 0;
+        const unsigned long long v = std::strtoull(value.c_str(), nullptr, 10);
+        if (errno == ERANGE || v < static_cast<unsigned long long>(lo) ||
+            v > static_cast<unsigned long long>(hi))
+          return "'" + value + "' is out of range; accepted: " + accepted;
+        return {};
+      },
+      "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+}
+
+CLI::Validator CppNamespace() {
+  return CLI::Validator(
+      [](std::string &value) -> std::string {
+        // A C++ namespace path: identifiers separated by "::".
+        bool ok = !value.empty();
+        bool start = true;
+        for (size_t i = 0; ok && i < value.size(); ++i) {
+          const char c = value[i];
+          if (c == ':' && i + 1 < value.size() && value[i + 1] == ':' && !start) {
+            ++i;
+            start = true;
+            continue;
+          }
+          const bool alpha = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+          const bool digit = c >= '0' && c <= '9';
+          ok = alpha || (digit && !start);
+          start = false;
+        }
+        if (!ok || start) return "'" + value + "' is not a C++ namespace name (e.g. my_engine::luts)";
+        return {};
+      },
+      "C++ namespace");
+}
+
+NdfKind ParseNdf(const std::string &s) { return s == "beckmann" ? NdfKind::kBeckmann : NdfKind::kGgx; }
+SmithForm ParseSmith(const std::string &s) {
+  return s == "separable" ? SmithForm::kSeparable : SmithForm::kCorrelated;
+}
+FresnelModel ParseFresnel(const std::string &s) {
+  if (s == "dielectric") return FresnelModel::kDielectric;
+  if (s == "conductor") return FresnelModel::kConductor;
+  return FresnelModel::kSchlick;
+}
+Estimator ParseEstimator(const std::string &s) {
+  if (s == "ndf") return Estimator::kNdf;
+  if (s == "quadrature") return Estimator::kQuadrature;
+  return Estimator::kVisibleNormal;
+}
+TableKind ParseTable(const std::string &s) {
+  for (TableKind k : kAllTables)
+    if (s == TableName(k)) return k;
+  return TableKind::kE;
+}
+
+// Checks that `dir` is (or can become) a writable directory, creating it if
+// missing. Returns an empty string on success, else the reason; sets
+// *usageError when the problem is the value itself (a file, not a directory).
+std::string PrepareOutputDirectory(const std::string &dir, bool *created, bool *usageError) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  *created = false;
+  *usageError = false;
+  if (fs::exists(dir, ec)) {
+    if (!fs::is_directory(dir, ec)) {
+      *usageError = true;
+      return "exists and is not a directory; accepted: a directory, created if missing";
+    }
+  } else {
+    *created = fs::create_directories(dir, ec);
+    if (ec) return "cannot create the directory: " + ec.message();
+  }
+  // Probe by writing, which also catches read-only file systems.
+  const std::string probe = (fs::path(dir) / (".lutbake-probe-" + std::to_string(::getpid()))).string();
+  std::FILE *f = std::fopen(probe.c_str(), "wb");
+  if (!f) {
+    const std::string reason = std::strerror(errno);
+    if (*created) fs::remove(dir, ec);
+    return "is not writable: " + reason;
+  }
+  std::fclose(f);
+  std::remove(probe.c_str());
+  return {};
+}
+
+}  // namespace
+
+void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
+  app.add_option("--out", o.outDir, "Output directory (created if missing)")
+      ->required()
+      ->type_name("DIR");
+  app.add_option("--tables", o.tables, "Tables to bake")
+      ->capture_default_str()
+      ->check(ListOf({"E", "Eavg", "Favg", "dfg"}));
+  app.add_option("--ndf", o.ndf, "Microfacet distribution")
+      ->capture_default_str()
+      ->check(OneOf({"ggx", "beckmann"}));
+  app.add_option("--smith", o.smith, "Smith masking-shadowing form")
+      ->capture_default_str()
+      ->check(OneOf({"correlated", "separable"}));
+  app.add_option("--fresnel", o.fresnel,
+                 "Fresnel model of the Favg table: schlick (axis F0 in [0,1]), dielectric (exact, "
+                 "axis eta in [1,3]), conductor (exact, axes eta in [0,4] x k in [0,10])")
+      ->capture_default_str()
+      ->check(OneOf({"schlick", "dielectric", "conductor"}));
+  app.add_option("--estimator", o.estimator,
+                 "vndf: visible-normal sampling; ndf: NDF sampling; quadrature: deterministic "
+                 "Gauss-Kronrod (slow, ~1e-11)")
+      ->capture_default_str()
+      ->check(OneOf({"vndf", "ndf", "quadrature"}));
+  app.add_option("--size", o.size,
+                 "Texels per axis for every table (default: 32 for E, Eavg, Favg; 128 for dfg)")
+      ->type_name("N")
+      ->check(InRange(1, kMaxSize, "texels per axis"));
+  app.add_option("--samples", o.samples,
+                 "Samples per texel of E and dfg (Eavg: 32x as many); at least 2 so that the "
+                 "error can be estimated")
+      ->capture_default_str()
+      ->type_name("N")
+      ->check(InRange<uint64_t>(2, kMaxSamples, "samples per texel"));
+  app.add_option("--seed", o.seed, "Seed of the point-set scrambling")
+      ->capture_default_str()
+      ->type_name("S")
+      ->check(InRange<uint64_t>(0, UINT64_MAX, "(any unsigned 64-bit integer)"));
+  app.add_option("--threads", o.threads, "Worker threads (default: all cores); output does not depend on it")
+      ->type_name("N")
+      ->check(InRange(1, kMaxThreads, "threads"));
+  app.add_option("--format", o.formats, "Files to write per table: T.exr, T.bin, T.h")
+      ->capture_default_str()
+      ->check(ListOf({"exr", "bin", "header"}));
+  app.add_option("--namespace", o.headerNamespace, "Namespace of the generated C++ headers")
+      ->capture_default_str()
+      ->check(CppNamespace());
+  app.add_flag("--json", o.json, "Print the summary as one JSON object on stdout");
+  app.footer(
+      "Example:\n  lutbake bake --out out\n"
+      "  lutbake bake --out luts --tables E,Eavg --ndf beckmann --size 64 --format exr,header");
+}
+
+int RunBake(const BakeOptions &o, const std::string &commandLine) {
+  BakeSettings settings;
+  settings.ndf = ParseNdf(o.ndf);
+  settings.smith = ParseSmith(o.smith);
+  settings.fresnel = ParseFresnel(o.fresnel);
+  settings.estimator = ParseEstimator(o.estimator);
+  if (o.size > 0) settings.sizeE = settings.sizeEavg = settings.sizeFavg = settings.sizeDfg = o.size;
+  settings.samples = o.samples;
+  settings.seed = o.seed;
+  settings.commandLine = commandLine;
+
+  std::vector<TableKind> tables;
+  for (const std::string &name : SplitList(o.tables)) tables.push_back(ParseTable(name));
+  std::vector<std::unique_ptr<TableWriter>> writers;
+  for (const std::string &name : SplitList(o.formats)) writers.push_back(MakeWriter(name));
+
+  bool created = false, usageError = false;
+  const std::string problem = PrepareOutputDirectory(o.outDir, &created, &usageError);
+  if (!problem.empty()) {
+    std::cerr << "lutbake bake: --out " << o.outDir << ": " << problem << "\n";
+    return usageError ? 2 : 1;
+  }
+
+  const int threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
+                                  static_cast<size_t>(threads));
+
+  nlohmann::ordered_json summary;
+  summary["lutbakeVersion"] = LutbakeVersion();
+  summary["out"] = o.outDir;
+  summary["threads"] = threads;
+  summary["tables"] = nlohmann::ordered_json::array();
+  try {
+    AtomicOutputSet output;
+    WriteOptions writeOptions;
+    writeOptions.headerNamespace = o.headerNamespace;
+    for (TableKind kind : tables) {
+      const auto start = std::chrono::steady_clock::now();
+      const Table table = BakeTable(kind, settings);
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      nlohmann::ordered_json files = nlohmann::ordered_json::array();
+      for (const auto &writer : writers) {
+        const std::string path =
+            (std::filesystem::path(o.outDir) / (std::string(TableName(kind)) + writer->extension()))
+                .string();
+        writer->Write(table, output.Add(path), writeOptions);
+        files.push_back(path);
+      }
+      const std::string *samples = table.FindMetadata("samplesPerTexel");
+      char line[256];
+      std::snprintf(line, sizeof line,
+                    "%-5s %4d x %-4d %s samples/texel  %7.2f s  error max %.2e  rms %.2e\n",
+                    TableName(kind), table.width(), table.height(),
+                    samples ? samples->c_str() : "n/a", seconds, table.MaxError(), table.RmsError());
+      std::cerr << line;
+      nlohmann::ordered_json entry;
+      entry["name"] = TableName(kind);
+      entry["width"] = table.width();
+      entry["height"] = table.height();
+      entry["channels"] = table.channels;
+      entry["samplesPerTexel"] = samples && *samples != "n/a" ? nlohmann::ordered_json(std::stoull(*samples)) : nlohmann::ordered_json();
+      entry["estimator"] = *table.FindMetadata("estimator");
+      entry["seconds"] = seconds;
+      entry["errorMax"] = table.MaxError();
+      entry["errorRms"] = table.RmsError();
+      entry["files"] = files;
+      summary["tables"].push_back(entry);
+    }
+    output.Commit();
+  } catch (const IoError &e) {
+    std::cerr << "lutbake bake: " << e.what() << "\n";
+    if (created) {
+      std::error_code ec;
+      std::filesystem::remove(o.outDir, ec);  // only succeeds if still empty
+    }
+    return 1;
+  } catch (const std::bad_alloc &) {
+    std::cerr << "lutbake bake: out of memory\n";
+    return 1;
+  }
+  if (o.json) std::cout << summary.dump(2) << "\n";
+  return 0;
+}
+
+}  // namespace lutbake::cli

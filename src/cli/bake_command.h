@@ -1,0 +1,35 @@
+// `lutbake bake`: options, their validation, and the run function.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+#include "lutbake/bake.h"
+
+namespace lutbake::cli {
+
+struct BakeOptions {
+  std::string outDir;
+  std::string tables = "E,Eavg,Favg,dfg";
+  std::string ndf = "ggx";
+  std::string smith = "correlated";
+  std::string fresnel = "schlick";
+  std::string estimator = "vndf";
+  int size = 0;  // 0: the per-table defaults
+  uint64_t samples = kDefaultSamples;
+  uint64_t seed = 0;
+  int threads = 0;  // 0: all cores
+  std::string formats = "exr,bin,header";
+  std::string headerNamespace = "lutbake_luts";
+  bool json = false;
+};
+
+void SetupBakeCommand(CLI::App &app, BakeOptions &options);
+
+// Returns the process exit status: 0 success, 1 runtime failure (cannot
+// write), 2 usage error found after parsing.
+int RunBake(const BakeOptions &options, const std::string &commandLine);
+
+}  // namespace lutbake::cli

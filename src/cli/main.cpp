@@ -1,0 +1,55 @@
+// lutbake: the command-line shell around the library. Parses options, calls
+// the library, maps failures to exit codes (2 usage, 1 runtime, 0 success).
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "bake_command.h"
+#include "lutbake/bake.h"
+
+namespace {
+
+std::string QuoteArgument(const std::string &arg) {
+  if (!arg.empty() && arg.find_first_of(" \t\n'\"\\$") == std::string::npos) return arg;
+  std::string quoted = "'";
+  for (char c : arg) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  CLI::App app{"lutbake: bakes microfacet lookup tables (Kulla-Conty E, E_avg, F_avg and the "
+               "split-sum DFG) with a measured error for every texel."};
+  app.set_version_flag("--version", std::string("lutbake ") + lutbake::LutbakeVersion());
+  app.require_subcommand(1);
+  app.footer("Example:\n  lutbake bake --out out          # the four default tables\n"
+             "Run 'lutbake bake --help' for every option of bake.");
+  lutbake::cli::BakeOptions bakeOptions;
+  CLI::App *bake = app.add_subcommand("bake", "Bake tables into a directory (EXR, .bin, C++ header)");
+  lutbake::cli::SetupBakeCommand(*bake, bakeOptions);
+
+  std::string commandLine = "lutbake";
+  for (int i = 1; i < argc; ++i) commandLine += " " + QuoteArgument(argv[i]);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp &e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp &e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion &e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError &e) {
+    std::cerr << "lutbake: " << e.what() << "\n";
+    std::cerr << "Run 'lutbake --help' or 'lutbake bake --help' for the accepted options.\n";
+    return 2;
+  }
+  try {
+    if (bake->parsed()) return lutbake::cli::RunBake(bakeOptions, commandLine);
+  } catch (const std::exception &e) {
+    std::cerr << "lutbake: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,61 @@
+#include "lutbake/fresnel.h"
+
+#include <complex>
+
+#include "lutbake/gauss_kronrod.h"
+#include "lutbake/math.h"
+
+namespace lutbake {
+
+std::string_view ToString(FresnelModel model) {
+  switch (model) {
+    case FresnelModel::kSchlick: return "schlick";
+    case FresnelModel::kDielectric: return "dielectric";
+    case FresnelModel::kConductor: return "conductor";
+  }
+  return "?";
+}
+
+double SchlickFresnel(double f0, double mu) { return f0 + (1.0 - f0) * Pow5(1.0 - mu); }
+
+double ExactFresnel(double eta, double k, double mu) {
+  const std::complex<double> n(eta, k);
+  const std::complex<double> n2 = n * n;
+  const double sin2 = std::max(0.0, (1.0 - mu) * (1.0 + mu));
+  const std::complex<double> w = std::sqrt(n2 - sin2);
+  const std::complex<double> sDen = mu + w;
+  const std::complex<double> pDen = n2 * mu + w;
+  // Both denominators vanish only for n = 0 (a perfect reflector of no
+  // index) at normal incidence, where the limit is F = 1.
+  if (std::norm(sDen) == 0.0 || std::norm(pDen) == 0.0) return 1.0;
+  const double rs = std::norm((mu - w) / sDen);
+  const double rp = std::norm((n2 * mu - w) / pDen);
+  return std::min(1.0, 0.5 * (rs + rp));
+}
+
+namespace {
+// Tolerance of the F_avg integrals: the integrands are smooth (or split at
+// their one kink), so adaptive Gauss-Kronrod reaches rounding level quickly.
+constexpr double kFavgTolerance = 1e-15;
+}  // namespace
+
+FresnelAverageResult SchlickFresnelAverage(double f0) {
+  const QuadratureResult r = IntegrateAdaptive(
+      [f0](double mu) { return 2.0 * mu * SchlickFresnel(f0, mu); }, 0.0, 1.0, kFavgTolerance);
+  return {r.value, r.error};
+}
+
+FresnelAverageResult ExactFresnelAverage(double eta, double k) {
+  const auto integrand = [eta, k](double mu) { return 2.0 * mu * ExactFresnel(eta, k, mu); };
+  if (k == 0.0 && eta < 1.0) {
+    // Total internal reflection below mu_c = sqrt(1 - eta^2): F = 1 there
+    // exactly, so that part integrates to mu_c^2; the rest is smooth.
+    const double muCritical = std::sqrt((1.0 - eta) * (1.0 + eta));
+    const QuadratureResult r = IntegrateAdaptive(integrand, muCritical, 1.0, kFavgTolerance);
+    return {muCritical * muCritical + r.value, r.error};
+  }
+  const QuadratureResult r = IntegrateAdaptive(integrand, 0.0, 1.0, kFavgTolerance);
+  return {r.value, r.error};
+}
+
+}  // namespace lutbake
