@@ -1,0 +1,130 @@
+// The lutbake executable: bad input is refused with exit 2 (usage) or 1
+// (cannot write) and leaves nothing behind; output does not depend on --threads.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int status;
+  std::string output;
+};
+
+CommandResult Lutbake(const std::string &args) {
+  const std::string log = (fs::temp_directory_path() / ("lutbake_cli_" + std::to_string(::getpid()) + ".log")).string();
+  const std::string command = std::string(LUTBAKE_BINARY) + " " + args + " > " + log + " 2>&1";
+  const int raw = std::system(command.c_str());
+  std::ifstream in(log);
+  std::string output((std::istreambuf_iterator<char>(in)), {});
+  fs::remove(log);
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, output};
+}
+
+fs::path Scratch(const std::string &name) {
+  const fs::path dir = fs::temp_directory_path() / ("lutbake_cli_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  return dir;
+}
+
+struct BadInput {
+  std::string args, mentions;
+};
+
+TEST(Cli, BadInputIsRefusedWithUsageStatusAndNoOutput) {
+  const fs::path out = Scratch("bad");
+  for (const BadInput &bad : std::vector<BadInput>{{"--size 0", "--size"},
+                                                   {"--size 100000", "4096"},
+                                                   {"--samples 0", "--samples"},
+                                                   {"--samples -3", "--samples"},
+                                                   {"--ndf foo", "ggx, beckmann"},
+                                                   {"--smith tall", "correlated"},
+                                                   {"--tables E,nope", "nope"},
+                                                   {"--format exr,png", "png"},
+                                                   {"--threads 0", "--threads"},
+                                                   {"--namespace 9bad", "namespace"},
+                                                   {"--frobnicate", "frobnicate"}}) {
+    const CommandResult r = Lutbake("bake --out " + out.string() + " " + bad.args);
+    EXPECT_EQ(r.status, 2) << bad.args << ": " << r.output;
+    EXPECT_NE(r.output.find(bad.mentions), std::string::npos) << bad.args << ": " << r.output;
+    EXPECT_FALSE(fs::exists(out)) << bad.args;
+  }
+  EXPECT_EQ(Lutbake("bake").status, 2);  // --out is required
+}
+
+TEST(Cli, OutThatIsAFileOrUnwritable) {
+  const fs::path file = Scratch("file");
+  std::ofstream(file) << "not a directory";
+  const CommandResult r = Lutbake("bake --out " + file.string() + " --size 2 --samples 2");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find(file.string()), std::string::npos);
+  fs::remove(file);
+  // A directory that cannot be created (its parent is a file).
+  std::ofstream(file) << "x";
+  const CommandResult r2 = Lutbake("bake --out " + (file / "sub").string() + " --size 2 --samples 2");
+  EXPECT_EQ(r2.status, 1) << r2.output;
+  fs::remove(file);
+}
+
+TEST(Cli, HelpListsEveryOption) {
+  const CommandResult r = Lutbake("bake --help");
+  EXPECT_EQ(r.status, 0);
+  for (const char *flag : {"--out", "--tables", "--ndf", "--smith", "--fresnel", "--size", "--samples",
+                           "--seed", "--threads", "--format", "--json", "Example"})
+    EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
+  EXPECT_EQ(Lutbake("--help").status, 0);
+}
+
+std::string ReadFile(const fs::path &p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
+TEST(Cli, OutputIsByteIdenticalForOneAndTwoThreads) {
+  const fs::path a = Scratch("t1"), b = Scratch("t2");
+  // The command line is recorded in every file, so both runs use the same
+  // arguments apart from the directory, given as a relative path from each
+  // parent.
+  ASSERT_EQ(Lutbake("bake --out " + a.string() + " --size 8 --samples 128 --threads 1").status, 0);
+  ASSERT_EQ(Lutbake("bake --out " + b.string() + " --size 8 --samples 128 --threads 2").status, 0);
+  int compared = 0;
+  for (const auto &entry : fs::directory_iterator(a)) {
+    const std::string name = entry.path().filename().string();
+    ASSERT_TRUE(fs::exists(b / name)) << name;
+    if (name.find(".tmp") != std::string::npos) ADD_FAILURE() << "temporary left: " << name;
+    // Blank out the recorded command lines (they name the directory and
+    // --threads) and compare the rest byte for byte.
+    std::string x = ReadFile(a / name), y = ReadFile(b / name);
+    for (std::string *s : {&x, &y}) {
+      for (const std::string &arg : {a.string() + " --size 8 --samples 128 --threads 1",
+                                     b.string() + " --size 8 --samples 128 --threads 2"}) {
+        for (size_t at = s->find(arg); at != std::string::npos; at = s->find(arg))
+          s->replace(at, arg.size(), std::string(arg.size(), '#'));
+      }
+    }
+    EXPECT_EQ(x, y) << name;
+    ++compared;
+  }
+  EXPECT_EQ(compared, 12);
+  fs::remove_all(a);
+  fs::remove_all(b);
+}
+
+TEST(Cli, JsonSummary) {
+  const fs::path out = Scratch("json");
+  const CommandResult r = Lutbake("bake --out " + out.string() + " --tables Favg,E --size 4 --samples 16 --format bin --json");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("\"name\": \"Favg\""), std::string::npos);
+  EXPECT_NE(r.output.find("\"errorMax\""), std::string::npos);
+  EXPECT_TRUE(fs::exists(out / "E.bin"));
+  EXPECT_FALSE(fs::exists(out / "E.exr"));
+  fs::remove_all(out);
+}
+
+}  // namespace

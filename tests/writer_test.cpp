@@ -1,0 +1,158 @@
+// Round trips of the three formats: EXR read back through OpenImageIO (an
+// independent reader), .bin through its documented layout, and the C++
+// header compiled with -Werror and checked through its own lookups.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "lutbake/bake.h"
+#include "lutbake/binary_format.h"
+#include "lutbake/writer.h"
+
+namespace lutbake {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path TempDir(const std::string &name) {
+  const fs::path dir = fs::temp_directory_path() / ("lutbake_test_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+Table SmallTable(TableKind kind, int size = 8) {
+  BakeSettings s;
+  s.sizeE = s.sizeEavg = s.sizeFavg = s.sizeDfg = size;
+  s.samples = 64;
+  s.commandLine = "lutbake bake --test";
+  return BakeTable(kind, s);
+}
+
+TEST(ExrWriter, ReadsBackThroughOpenImageIO) {
+  const fs::path dir = TempDir("exr");
+  for (TableKind kind : kAllTables) {
+    const Table t = SmallTable(kind, 6);
+    const std::string path = (dir / (std::string(TableName(kind)) + ".exr")).string();
+    MakeExrWriter()->Write(t, path, {});
+    auto in = OIIO::ImageInput::open(path);
+    ASSERT_TRUE(in) << OIIO::geterror();
+    const OIIO::ImageSpec &spec = in->spec();
+    EXPECT_EQ(spec.width, t.width());
+    EXPECT_EQ(spec.height, t.height());
+    ASSERT_EQ(spec.nchannels, t.channels);
+    EXPECT_EQ(spec.format, OIIO::TypeDesc::FLOAT);
+    for (int c = 0; c < t.channels; ++c) EXPECT_EQ(spec.channelnames[c], t.channelNames[c]);
+    EXPECT_EQ(spec.get_string_attribute("table"), TableName(kind));
+    EXPECT_EQ(spec.get_string_attribute("commandLine"), "lutbake bake --test");
+    EXPECT_FALSE(spec.get_string_attribute("texelConvention").empty());
+    EXPECT_DOUBLE_EQ(spec.get_float_attribute("errorMax"), static_cast<float>(t.MaxError()));
+    EXPECT_EQ(spec.find_attribute("DateTime"), nullptr);
+    std::vector<float> pixels(t.values.size());
+    ASSERT_TRUE(in->read_image(0, 0, 0, t.channels, OIIO::TypeDesc::FLOAT, pixels.data()));
+    // Scanline 0 of the file is texel row y = 0 (the smoothest row).
+    for (size_t i = 0; i < pixels.size(); ++i) ASSERT_EQ(pixels[i], static_cast<float>(t.values[i])) << i;
+  }
+  fs::remove_all(dir);
+}
+
+TEST(ExrWriter, SameTableGivesSameBytes) {
+  const fs::path dir = TempDir("exrbytes");
+  const Table t = SmallTable(TableKind::kDfg);
+  MakeExrWriter()->Write(t, (dir / "a.exr").string(), {});
+  MakeExrWriter()->Write(t, (dir / "b.exr").string(), {});
+  std::ifstream a(dir / "a.exr", std::ios::binary), b(dir / "b.exr", std::ios::binary);
+  const std::string sa((std::istreambuf_iterator<char>(a)), {}), sb((std::istreambuf_iterator<char>(b)), {});
+  EXPECT_FALSE(sa.empty());
+  EXPECT_EQ(sa, sb);
+  fs::remove_all(dir);
+}
+
+TEST(BinaryWriter, RoundTrip) {
+  const fs::path dir = TempDir("bin");
+  for (TableKind kind : kAllTables) {
+    const Table t = SmallTable(kind, 5);
+    const std::string path = (dir / "t.bin").string();
+    MakeBinaryWriter()->Write(t, path, {});
+    const Table back = ReadBinaryTable(path);
+    EXPECT_EQ(back.width(), t.width());
+    EXPECT_EQ(back.height(), t.height());
+    EXPECT_EQ(back.channels, t.channels);
+    EXPECT_EQ(back.is2D(), t.is2D());
+    EXPECT_EQ(back.x.name, t.x.name);
+    EXPECT_EQ(back.x.min, t.x.min);
+    EXPECT_EQ(back.x.max, t.x.max);
+    EXPECT_EQ(back.y.name, t.y.name);
+    ASSERT_EQ(back.values.size(), t.values.size());
+    for (size_t i = 0; i < t.values.size(); ++i) {
+      EXPECT_EQ(back.values[i], static_cast<double>(static_cast<float>(t.values[i])));
+      EXPECT_EQ(back.errors[i], static_cast<double>(static_cast<float>(t.errors[i])));
+    }
+    ASSERT_NE(back.FindMetadata("table"), nullptr);
+    EXPECT_EQ(*back.FindMetadata("table"), TableName(kind));
+  }
+  // A truncated file is refused, not misread.
+  std::string bytes;
+  {
+    std::ifstream in(dir / "t.bin", std::ios::binary);
+    bytes.assign((std::istreambuf_iterator<char>(in)), {});
+  }
+  std::ofstream(dir / "cut.bin", std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size() - 3));
+  EXPECT_THROW(ReadBinaryTable((dir / "cut.bin").string()), IoError);
+  fs::remove_all(dir);
+}
+
+TEST(CppHeaderWriter, CompilesWithWerrorAndLooksUpExactly) {
+  const fs::path dir = TempDir("header");
+  WriteOptions options;
+  options.headerNamespace = "engine::luts";
+  std::string checks;
+  char line[512];
+  for (TableKind kind : kAllTables) {
+    // A size that is not a power of two, so texel centres are not exact in float.
+    const Table t = SmallTable(kind, 10);
+    MakeCppHeaderWriter()->Write(t, (dir / (std::string(TableName(kind)) + ".h")).string(), options);
+    for (int y = 0; y < t.height(); ++y)
+      for (int x = 0; x < t.width(); ++x) {
+        const float fx = static_cast<float>((x + 0.5) / t.width());
+        const float fy = static_cast<float>((y + 0.5) / t.height());
+        for (int c = 0; c < t.channels; ++c) {
+          const float expected = static_cast<float>(t.value(x, y, c));
+          if (kind == TableKind::kDfg)
+            std::snprintf(line, sizeof line, "  fail += engine::luts::lookup_dfg(%.9gf, %.9gf)[%d] != %.9gf;\n", fx, fy, c, expected);
+          else if (kind == TableKind::kE)
+            std::snprintf(line, sizeof line, "  fail += engine::luts::lookup_E(%.9gf, %.9gf) != %.9gf;\n", fx, fy, expected);
+          else
+            std::snprintf(line, sizeof line, "  fail += engine::luts::lookup_%s(%.9gf) != %.9gf;\n", TableName(kind), fx, expected);
+          checks += line;
+        }
+      }
+  }
+  // Between centres and outside the range: bilinear and clamped.
+  const Table e = SmallTable(TableKind::kE, 10);
+  const double mid = 0.5 * (e.value(2, 3) + e.value(3, 3));
+  std::snprintf(line, sizeof line, "  fail += std::fabs(engine::luts::lookup_E(0.3f, 0.35f) - %.9gf) > 1e-6f;\n", mid);
+  checks += line;
+  std::snprintf(line, sizeof line, "  fail += engine::luts::lookup_E(-5.0f, 7.0f) != %.9gf;\n", static_cast<float>(e.value(0, 9)));
+  checks += line;
+  checks += "  fail += !(engine::luts::lookup_E(std::nanf(\"\"), 0.5f) >= 0.0f);\n";
+  std::ofstream(dir / "main.cpp") << "#include <cmath>\n#include <cstdio>\n#include \"E.h\"\n#include \"Eavg.h\"\n"
+                                     "#include \"Favg.h\"\n#include \"dfg.h\"\nint main() {\n  int fail = 0;\n"
+                                  << checks << "  std::printf(\"%d failures\\n\", fail);\n  return fail == 0 ? 0 : 1;\n}\n";
+  for (const char *standard : {"c++17", "c++20"}) {
+    const std::string exe = (dir / (std::string("check_") + standard)).string();
+    const std::string command = std::string(LUTBAKE_TEST_CXX) + " -std=" + standard +
+                                " -Wall -Wextra -Wpedantic -Werror -fno-exceptions -I" + dir.string() +
+                                " " + (dir / "main.cpp").string() + " -o " + exe + " && " + exe;
+    EXPECT_EQ(std::system(command.c_str()), 0) << command;
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace lutbake
