@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Installs lutbake's Debian build and test dependencies, then configures and
+# builds a Release tree in build/. Idempotent.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+SUDO=""
+if [ "$(id -u)" != 0 ]; then SUDO=sudo; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends \
+  g++ cmake make pkg-config \
+  libopenexr-dev libimath-dev libopenimageio-dev openimageio-tools \
+  libtbb-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j"$(nproc)"
