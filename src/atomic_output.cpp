@@ -15,8 +15,8 @@ AtomicOutputSet::~AtomicOutputSet() {
 }
 
 std::string AtomicOutputSet::Add(const std::string &finalPath) {
-  const std::string temporary = finalPath + ".tmp-" + std::to_string(::getpid()) + "-" +
-                                std::to_string(entries_.size());
+  const std::string temporary =
+      finalPath + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(entries_.size());
   entries_.push_back({finalPath, temporary});
   return temporary;
 }

@@ -89,9 +89,9 @@ TexelResult AlbedoTexel(TableKind kind, const BakeSettings &s, double mu_o, doub
     out.error[0] = out.error[1] = r.error;
     return out;
   }
-  const AlbedoEstimator estimator{ndf, s.smith,
-                                  s.estimator == Estimator::kNdf ? SampleStrategy::kNdf
-                                                                 : SampleStrategy::kVisibleNormal};
+  const AlbedoEstimator estimator{
+      ndf, s.smith,
+      s.estimator == Estimator::kNdf ? SampleStrategy::kNdf : SampleStrategy::kVisibleNormal};
   const Vec3 o = ViewDirection(mu_o);
   const double L_o = ndf.MuLambda(mu_o);
   const uint64_t seed = TexelSeed(kind, texel, s.seed);
@@ -130,17 +130,17 @@ TexelResult AverageTexel(const BakeSettings &s, double alpha, size_t texel) {
     out.error[0] = r.error;
     return out;
   }
-  const AlbedoEstimator estimator{ndf, s.smith,
-                                  s.estimator == Estimator::kNdf ? SampleStrategy::kNdf
-                                                                 : SampleStrategy::kVisibleNormal};
+  const AlbedoEstimator estimator{
+      ndf, s.smith,
+      s.estimator == Estimator::kNdf ? SampleStrategy::kNdf : SampleStrategy::kVisibleNormal};
   const auto e = IntegrateReplicated<3, 1>(
       [&](const double(&u)[3]) {
         const double mu_o = std::sqrt(u[0]);
         const Vec3 o = ViewDirection(mu_o);
-        return std::array<double, 1>{
-            estimator.Sample(o, ndf.MuLambda(mu_o), u[1], u[2]).weight};
+        return std::array<double, 1>{estimator.Sample(o, ndf.MuLambda(mu_o), u[1], u[2]).weight};
       },
-      SamplesPerTexel(TableKind::kEavg, s), s.replicates, TexelSeed(TableKind::kEavg, texel, s.seed));
+      SamplesPerTexel(TableKind::kEavg, s), s.replicates,
+      TexelSeed(TableKind::kEavg, texel, s.seed));
   out.value[0] = e.mean[0];
   out.error[0] = kErrorSigmas * e.standardError[0];
   return out;
@@ -180,42 +180,43 @@ Table BakeTable(TableKind kind, const BakeSettings &s, const ProgressFn &progres
     case TableKind::kFavg: FresnelAxes(s.fresnel, s.sizeFavg, &table.x, &table.y); break;
   }
   table.channels = kind == TableKind::kDfg ? 2 : 1;
-  table.channelNames = kind == TableKind::kDfg ? std::vector<std::string>{"R", "G"}
-                                               : std::vector<std::string>{"Y"};
+  table.channelNames =
+      kind == TableKind::kDfg ? std::vector<std::string>{"R", "G"} : std::vector<std::string>{"Y"};
   const size_t texels = static_cast<size_t>(table.width()) * table.height();
   table.values.assign(texels * table.channels, 0.0);
   table.errors.assign(texels * table.channels, 0.0);
 
   std::atomic<size_t> done{0};
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, texels), [&](const tbb::blocked_range<size_t> &r) {
-    for (size_t t = r.begin(); t != r.end(); ++t) {
-      const int ix = static_cast<int>(t % table.width());
-      const int iy = static_cast<int>(t / table.width());
-      TexelResult texel;
-      switch (kind) {
-        case TableKind::kE:
-        case TableKind::kDfg: {
-          const double r_ = table.y.TexelCenter(iy);
-          texel = AlbedoTexel(kind, s, table.x.TexelCenter(ix), r_ * r_, t);
-          break;
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, texels), [&](const tbb::blocked_range<size_t> &r) {
+        for (size_t t = r.begin(); t != r.end(); ++t) {
+          const int ix = static_cast<int>(t % table.width());
+          const int iy = static_cast<int>(t / table.width());
+          TexelResult texel;
+          switch (kind) {
+            case TableKind::kE:
+            case TableKind::kDfg: {
+              const double r_ = table.y.TexelCenter(iy);
+              texel = AlbedoTexel(kind, s, table.x.TexelCenter(ix), r_ * r_, t);
+              break;
+            }
+            case TableKind::kEavg: {
+              const double r_ = table.x.TexelCenter(ix);
+              texel = AverageTexel(s, r_ * r_, t);
+              break;
+            }
+            case TableKind::kFavg:
+              texel = FresnelTexel(s.fresnel, table.x.TexelCenter(ix), table.y.TexelCenter(iy));
+              break;
+          }
+          for (int c = 0; c < table.channels; ++c) {
+            table.values[t * table.channels + c] = texel.value[c];
+            table.errors[t * table.channels + c] = texel.error[c];
+          }
         }
-        case TableKind::kEavg: {
-          const double r_ = table.x.TexelCenter(ix);
-          texel = AverageTexel(s, r_ * r_, t);
-          break;
-        }
-        case TableKind::kFavg:
-          texel = FresnelTexel(s.fresnel, table.x.TexelCenter(ix), table.y.TexelCenter(iy));
-          break;
-      }
-      for (int c = 0; c < table.channels; ++c) {
-        table.values[t * table.channels + c] = texel.value[c];
-        table.errors[t * table.channels + c] = texel.error[c];
-      }
-    }
-    const size_t now = done.fetch_add(r.size()) + r.size();
-    if (progress) progress(static_cast<double>(now) / static_cast<double>(texels));
-  });
+        const size_t now = done.fetch_add(r.size()) + r.size();
+        if (progress) progress(static_cast<double>(now) / static_cast<double>(texels));
+      });
 
   const bool albedo = kind != TableKind::kFavg;
   const bool sampled = albedo && s.estimator != Estimator::kQuadrature;
@@ -227,17 +228,18 @@ Table BakeTable(TableKind kind, const BakeSettings &s, const ProgressFn &progres
   m.emplace_back("axisX", DescribeAxis(table.x));
   m.emplace_back("axisY", table.is2D() ? DescribeAxis(table.y) : "none (1D table)");
   m.emplace_back("alpha", albedo ? "alpha = perceptualRoughness^2" : "n/a");
-  m.emplace_back("texelConvention", "texel i of N holds the value at u = (i + 0.5) / N, "
-                                    "mapped linearly onto [min, max]; y = 0 first");
+  m.emplace_back("texelConvention",
+                 "texel i of N holds the value at u = (i + 0.5) / N, "
+                 "mapped linearly onto [min, max]; y = 0 first");
   m.emplace_back("channelLayout", kind == TableKind::kDfg ? "R = A (scale), G = B (bias)"
-                                                     : "Y = " + std::string(TableName(kind)));
-  m.emplace_back("estimator", sampled ? std::string(ToString(s.estimator)) +
-                                            " with Owen-scrambled Sobol points"
-                                      : "adaptive Gauss-Kronrod quadrature");
+                                                          : "Y = " + std::string(TableName(kind)));
+  m.emplace_back("estimator",
+                 sampled ? std::string(ToString(s.estimator)) + " with Owen-scrambled Sobol points"
+                         : "adaptive Gauss-Kronrod quadrature");
   m.emplace_back("samplesPerTexel", sampled ? std::to_string(SamplesPerTexel(kind, s)) : "n/a");
-  m.emplace_back("replicates", sampled ? std::to_string(std::min<uint64_t>(
-                                             s.replicates, SamplesPerTexel(kind, s)))
-                                       : "n/a");
+  m.emplace_back(
+      "replicates",
+      sampled ? std::to_string(std::min<uint64_t>(s.replicates, SamplesPerTexel(kind, s))) : "n/a");
   m.emplace_back("seed", std::to_string(s.seed));
   m.emplace_back("errorBound",
                  sampled ? "5.841 standard errors (Student t, 3 dof, 99%) from the spread of "

@@ -37,12 +37,14 @@ void PutAxis(std::string &out, const Axis &axis, bool present) {
 
 uint32_t GetU32(const std::string &in, size_t at) {
   uint32_t v = 0;
-  for (int i = 0; i < 4; ++i) v |= static_cast<uint32_t>(static_cast<unsigned char>(in[at + i])) << (8 * i);
+  for (int i = 0; i < 4; ++i)
+    v |= static_cast<uint32_t>(static_cast<unsigned char>(in[at + i])) << (8 * i);
   return v;
 }
 double GetF64(const std::string &in, size_t at) {
   uint64_t bits = 0;
-  for (int i = 0; i < 8; ++i) bits |= static_cast<uint64_t>(static_cast<unsigned char>(in[at + i])) << (8 * i);
+  for (int i = 0; i < 8; ++i)
+    bits |= static_cast<uint64_t>(static_cast<unsigned char>(in[at + i])) << (8 * i);
   double v;
   std::memcpy(&v, &bits, sizeof v);
   return v;
@@ -116,15 +118,18 @@ Table ReadBinaryTable(const std::string &path) {
   table.y = GetAxis(in, 88);
   if (dims == 1) table.y.name.clear();
   const size_t metadataLength = GetU32(in, 136);
-  if (kFixedHeaderBytes + metadataLength > dataOffset) throw IoError(path + ": bad metadata length");
+  if (kFixedHeaderBytes + metadataLength > dataOffset)
+    throw IoError(path + ": bad metadata length");
   std::istringstream lines(in.substr(kFixedHeaderBytes, metadataLength));
   for (std::string line; std::getline(lines, line);) {
     const size_t eq = line.find('=');
-    if (eq != std::string::npos) table.metadata.emplace_back(line.substr(0, eq), line.substr(eq + 1));
+    if (eq != std::string::npos)
+      table.metadata.emplace_back(line.substr(0, eq), line.substr(eq + 1));
   }
   const size_t count = static_cast<size_t>(table.width()) * table.height() * table.channels;
   const size_t blocks = (flags & 1u) ? 2 : 1;
-  if (in.size() != dataOffset + blocks * 4 * count) throw IoError(path + ": truncated or oversized");
+  if (in.size() != dataOffset + blocks * 4 * count)
+    throw IoError(path + ": truncated or oversized");
   table.values.resize(count);
   for (size_t i = 0; i < count; ++i) table.values[i] = GetF32(in, dataOffset + 4 * i);
   if (flags & 1u) {

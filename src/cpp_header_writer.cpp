@@ -38,7 +38,8 @@ std::string ParameterName(const Axis &axis) {
 
 // The shared lookup helpers, emitted into each table's own namespace so that
 // several generated headers can be included together.
-const char *kCoordinateHelper = R"(// Continuous texel coordinate t = (v - lo) / (hi - lo) * n - 0.5 (t = i at
+const char *kCoordinateHelper =
+    R"(// Continuous texel coordinate t = (v - lo) / (hi - lo) * n - 0.5 (t = i at
 // the centre of texel i), clamped to [0, n - 1]; NaN maps to 0. A value
 // within the float rounding of a texel centre is snapped onto it, so that
 // a centre computed in float returns that texel's value exactly.
@@ -81,9 +82,11 @@ class CppHeaderWriter final : public TableWriter {
     if (table.kind != TableKind::kFavg)
       h << "// Roughness is perceptual roughness r; the NDF width is alpha = r^2.\n";
     h << "// Layout: kValues[(y * kWidth + x) * kChannels + c]";
-    if (table.kind == TableKind::kDfg) h << "; channel 0 = A (scale), 1 = B (bias):\n"
-                                            "// specular albedo = F0 A + F90 B.\n";
-    else h << "; one channel.\n";
+    if (table.kind == TableKind::kDfg)
+      h << "; channel 0 = A (scale), 1 = B (bias):\n"
+           "// specular albedo = F0 A + F90 B.\n";
+    else
+      h << "; one channel.\n";
     h << "// Lookups interpolate bilinearly between texel centres, clamp at the edges,\n"
          "// and return a texel's value exactly at its centre.\n";
     h << "#pragma once\n\n#include <array>\n#include <cmath>\n#include <cstddef>\n\n";
@@ -111,7 +114,8 @@ class CppHeaderWriter final : public TableWriter {
     // One generic sampler per channel count.
     h << "inline double Texel(std::size_t x, std::size_t y, std::size_t c) {\n"
          "  return static_cast<double>(kValues[(y * kWidth + x) * kChannels + c]);\n}\n\n";
-    h << "inline double Sample(std::size_t x0, double wx, std::size_t y0, double wy, std::size_t c) {\n"
+    h << "inline double Sample(std::size_t x0, double wx, std::size_t y0, double wy, std::size_t "
+         "c) {\n"
          "  const std::size_t x1 = kWidth > 1 ? x0 + 1 : x0;\n"
          "  const std::size_t y1 = kHeight > 1 ? y0 + 1 : y0;\n"
          "  return (1.0 - wy) * ((1.0 - wx) * Texel(x0, y0, c) + wx * Texel(x1, y0, c)) +\n"
@@ -123,9 +127,11 @@ class CppHeaderWriter final : public TableWriter {
     const std::string t = name + "_table::";
     std::string signature, body;
     body = "  std::size_t x0 = 0, y0 = 0;\n  double wx = 0.0, wy = 0.0;\n";
-    body += "  " + t + "Coordinate(" + px + ", " + t + "kXMin, " + t + "kXMax, " + t + "kWidth, &x0, &wx);\n";
+    body += "  " + t + "Coordinate(" + px + ", " + t + "kXMin, " + t + "kXMax, " + t +
+            "kWidth, &x0, &wx);\n";
     if (table.is2D())
-      body += "  " + t + "Coordinate(" + py + ", " + t + "kYMin, " + t + "kYMax, " + t + "kHeight, &y0, &wy);\n";
+      body += "  " + t + "Coordinate(" + py + ", " + t + "kYMin, " + t + "kYMax, " + t +
+              "kHeight, &y0, &wy);\n";
     if (table.kind == TableKind::kDfg) {
       h << "// Split-sum terms {A, B} at view cosine mu and perceptual roughness r.\n";
       h << "inline std::array<float, 2> lookup_dfg(float " << px << ", float " << py << ") {\n"

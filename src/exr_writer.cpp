@@ -40,9 +40,9 @@ class ExrWriter final : public TableWriter {
       const size_t xStride = sizeof(float) * channels;
       const size_t yStride = xStride * width;
       for (int c = 0; c < channels; ++c)
-        frame.insert(table.channelNames[c],
-                     Imf::Slice(Imf::FLOAT, reinterpret_cast<char *>(pixels.data() + c), xStride,
-                                yStride));
+        frame.insert(
+            table.channelNames[c],
+            Imf::Slice(Imf::FLOAT, reinterpret_cast<char *>(pixels.data() + c), xStride, yStride));
       Imf::OutputFile file(path.c_str(), header);
       file.setFrameBuffer(frame);
       file.writePixels(height);

@@ -67,9 +67,9 @@ QuadratureResult IntegrateChannel(const Ndf &ndf, SmithForm smith, double mu_o, 
       vMax = s < kBeckmannSlopeCut * c ? s / c : kBeckmannSlopeCut;
     }
     if (!(vMax > 0.0)) return 0.0;
-    const QuadratureResult inner = IntegrateAdaptive(
-        [&](double v) { return InnerIntegrand(ndf, smith, setup, channel, v); }, 0.0, vMax,
-        innerTolerance, 0.0, kInnerStartIntervals);
+    const QuadratureResult inner =
+        IntegrateAdaptive([&](double v) { return InnerIntegrand(ndf, smith, setup, channel, v); },
+                          0.0, vMax, innerTolerance, 0.0, kInnerStartIntervals);
     worstInnerError = std::max(worstInnerError, inner.error);
     innerConverged = innerConverged && inner.converged;
     return inner.value * kInvPi;

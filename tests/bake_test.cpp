@@ -31,8 +31,8 @@ TEST(Bake, DefaultSamplesMeetOneE4AgainstQuadrature) {
     tbb::parallel_for(size_t(0), worst.size(), [&](size_t i) {
       const int x = static_cast<int>(i % t.width()), y = static_cast<int>(i / t.width());
       const double r = t.y.TexelCenter(y);
-      const ReferenceAlbedo ref =
-          IntegrateReferenceAlbedo(Ndf{NdfKind::kGgx, r * r}, SmithForm::kCorrelated, t.x.TexelCenter(x));
+      const ReferenceAlbedo ref = IntegrateReferenceAlbedo(
+          Ndf{NdfKind::kGgx, r * r}, SmithForm::kCorrelated, t.x.TexelCenter(x));
       if (kind == TableKind::kE)
         worst[i] = std::abs(t.value(x, y) - ref.E);
       else
@@ -54,7 +54,8 @@ TEST(Bake, ErrorBoundsHoldForNinetyNinePercentOfInteriorTexels) {
     for (int x = 0; x < t.width(); ++x) {
       const double r = t.y.TexelCenter(y);
       const double ref = IntegrateReferenceAlbedo(Ndf{NdfKind::kGgx, r * r}, SmithForm::kCorrelated,
-                                                  t.x.TexelCenter(x)).E;
+                                                  t.x.TexelCenter(x))
+                             .E;
       if (std::abs(t.value(x, y) - ref) > t.errors[t.index(x, y, 0)]) ++exceed;
     }
   EXPECT_LE(exceed, 4);
@@ -69,7 +70,8 @@ TEST(Bake, SmoothLimitEIsOneAndBIsSchlickWeight) {
   const Axis roughness{"perceptualRoughness", 0.0, 0.04, 4};
   for (double mu : {0.375, 0.625, 0.875}) {
     const double r = roughness.TexelCenter(0);
-    const ReferenceAlbedo ref = IntegrateReferenceAlbedo(Ndf{NdfKind::kGgx, r * r}, SmithForm::kCorrelated, mu);
+    const ReferenceAlbedo ref =
+        IntegrateReferenceAlbedo(Ndf{NdfKind::kGgx, r * r}, SmithForm::kCorrelated, mu);
     EXPECT_NEAR(ref.E, 1.0, 1e-6);
     EXPECT_NEAR(ref.B, std::pow(1.0 - mu, 5), 1e-6);
   }
@@ -77,8 +79,8 @@ TEST(Bake, SmoothLimitEIsOneAndBIsSchlickWeight) {
   const Table e = BakeTable(TableKind::kE, s);
   for (int x = 0; x < e.width(); ++x)
     for (int y = 1; y < e.height(); ++y)
-      EXPECT_LE(e.value(x, y), e.value(x, y - 1) + e.errors[e.index(x, y, 0)] +
-                                   e.errors[e.index(x, y - 1, 0)]);
+      EXPECT_LE(e.value(x, y),
+                e.value(x, y - 1) + e.errors[e.index(x, y, 0)] + e.errors[e.index(x, y - 1, 0)]);
   // And the smoothest row of a default-axis E is within 1e-3 of 1 away from grazing.
   for (int x = 1; x < e.width(); ++x) EXPECT_NEAR(e.value(x, 0), 1.0, 1e-3);
 }
@@ -93,8 +95,7 @@ TEST(Bake, SplitSumAddsUpToAlbedo) {
     for (int x = 0; x < e.width(); ++x) {
       const double bound = e.errors[e.index(x, y, 0)] + dfg.errors[dfg.index(x, y, 0)] +
                            dfg.errors[dfg.index(x, y, 1)] + 1e-12;
-      EXPECT_NEAR(dfg.value(x, y, 0) + dfg.value(x, y, 1), e.value(x, y), bound)
-          << x << "," << y;
+      EXPECT_NEAR(dfg.value(x, y, 0) + dfg.value(x, y, 1), e.value(x, y), bound) << x << "," << y;
     }
 }
 
@@ -135,7 +136,11 @@ TEST(Bake, MirrorRowIsExact) {
   s.estimator = Estimator::kQuadrature;
   const Table t = BakeTable(TableKind::kE, s);
   for (int x = 0; x < t.width(); ++x)
-    EXPECT_NEAR(t.value(x, 0), IntegrateReferenceAlbedo(Ndf{NdfKind::kGgx, 1.0 / 64}, SmithForm::kCorrelated, t.x.TexelCenter(x)).E, 1e-11);
+    EXPECT_NEAR(t.value(x, 0),
+                IntegrateReferenceAlbedo(Ndf{NdfKind::kGgx, 1.0 / 64}, SmithForm::kCorrelated,
+                                         t.x.TexelCenter(x))
+                    .E,
+                1e-11);
 }
 
 TEST(Bake, BitIdenticalForOneAndTwoThreads) {
@@ -151,9 +156,11 @@ TEST(Bake, BitIdenticalForOneAndTwoThreads) {
       two = BakeTable(kind, s);
     }
     ASSERT_EQ(one.values.size(), two.values.size());
-    EXPECT_EQ(0, std::memcmp(one.values.data(), two.values.data(), one.values.size() * sizeof(double)))
+    EXPECT_EQ(0,
+              std::memcmp(one.values.data(), two.values.data(), one.values.size() * sizeof(double)))
         << TableName(kind);
-    EXPECT_EQ(0, std::memcmp(one.errors.data(), two.errors.data(), one.errors.size() * sizeof(double)))
+    EXPECT_EQ(0,
+              std::memcmp(one.errors.data(), two.errors.data(), one.errors.size() * sizeof(double)))
         << TableName(kind);
   }
 }
@@ -202,7 +209,8 @@ TEST(Bake, BeckmannMatchesQuadrature) {
     for (int x = 0; x < t.width(); ++x) {
       const double r = t.y.TexelCenter(y);
       const double ref = IntegrateReferenceAlbedo(Ndf{NdfKind::kBeckmann, r * r},
-                                                  SmithForm::kCorrelated, t.x.TexelCenter(x)).E;
+                                                  SmithForm::kCorrelated, t.x.TexelCenter(x))
+                             .E;
       EXPECT_NEAR(t.value(x, y), ref, 1e-3) << x << "," << y;
     }
 }

@@ -18,7 +18,8 @@ struct CommandResult {
 };
 
 CommandResult Lutbake(const std::string &args) {
-  const std::string log = (fs::temp_directory_path() / ("lutbake_cli_" + std::to_string(::getpid()) + ".log")).string();
+  const std::string log =
+      (fs::temp_directory_path() / ("lutbake_cli_" + std::to_string(::getpid()) + ".log")).string();
   const std::string command = std::string(LUTBAKE_BINARY) + " " + args + " > " + log + " 2>&1";
   const int raw = std::system(command.c_str());
   std::ifstream in(log);
@@ -28,7 +29,8 @@ CommandResult Lutbake(const std::string &args) {
 }
 
 fs::path Scratch(const std::string &name) {
-  const fs::path dir = fs::temp_directory_path() / ("lutbake_cli_" + name + "_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("lutbake_cli_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   return dir;
 }
@@ -67,7 +69,8 @@ TEST(Cli, OutThatIsAFileOrUnwritable) {
   fs::remove(file);
   // A directory that cannot be created (its parent is a file).
   std::ofstream(file) << "x";
-  const CommandResult r2 = Lutbake("bake --out " + (file / "sub").string() + " --size 2 --samples 2");
+  const CommandResult r2 =
+      Lutbake("bake --out " + (file / "sub").string() + " --size 2 --samples 2");
   EXPECT_EQ(r2.status, 1) << r2.output;
   fs::remove(file);
 }
@@ -75,8 +78,8 @@ TEST(Cli, OutThatIsAFileOrUnwritable) {
 TEST(Cli, HelpListsEveryOption) {
   const CommandResult r = Lutbake("bake --help");
   EXPECT_EQ(r.status, 0);
-  for (const char *flag : {"--out", "--tables", "--ndf", "--smith", "--fresnel", "--size", "--samples",
-                           "--seed", "--threads", "--format", "--json", "Example"})
+  for (const char *flag : {"--out", "--tables", "--ndf", "--smith", "--fresnel", "--size",
+                           "--samples", "--seed", "--threads", "--format", "--json", "Example"})
     EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
   EXPECT_EQ(Lutbake("--help").status, 0);
 }
@@ -118,7 +121,8 @@ TEST(Cli, OutputIsByteIdenticalForOneAndTwoThreads) {
 
 TEST(Cli, JsonSummary) {
   const fs::path out = Scratch("json");
-  const CommandResult r = Lutbake("bake --out " + out.string() + " --tables Favg,E --size 4 --samples 16 --format bin --json");
+  const CommandResult r = Lutbake("bake --out " + out.string() +
+                                  " --tables Favg,E --size 4 --samples 16 --format bin --json");
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("\"name\": \"Favg\""), std::string::npos);
   EXPECT_NE(r.output.find("\"errorMax\""), std::string::npos);

@@ -39,6 +39,8 @@ inline std::vector<CsvRow> ReadCsv(const std::string &path) {
   return rows;
 }
 
-inline std::string DataPath(const std::string &name) { return std::string(LUTBAKE_TEST_DATA) + "/" + name; }
+inline std::string DataPath(const std::string &name) {
+  return std::string(LUTBAKE_TEST_DATA) + "/" + name;
+}
 
 }  // namespace lutbake::test

@@ -27,8 +27,8 @@ TEST(Fresnel, ExactAveragesMatchIndependentValues) {
           << row.Text("param");
       ++checked;
     } else if (model == "conductor_exact") {
-      EXPECT_NEAR(ExactFresnelAverage(row.Number("eta"), row.Number("k")).value,
-                  row.Number("Favg"), 1e-14)
+      EXPECT_NEAR(ExactFresnelAverage(row.Number("eta"), row.Number("k")).value, row.Number("Favg"),
+                  1e-14)
           << row.Text("param");
       ++checked;
     }

@@ -95,7 +95,9 @@ TEST_P(VisibleNormals, ProjectedAreaIdentity) {
   const Ndf ndf{c.kind, c.alpha};
   const Vec3 o = ViewDirection(c.mu);
   const double projected = IntegrateOverBin(
-      [&](double theta, double phi) { return std::max(0.0, Dot(o, Direction(theta, phi))) * ndf.D(Direction(theta, phi)); },
+      [&](double theta, double phi) {
+        return std::max(0.0, Dot(o, Direction(theta, phi))) * ndf.D(Direction(theta, phi));
+      },
       c.mu, 0.0, 0.5 * kPi, 0.0, 2.0 * kPi);
   EXPECT_NEAR(projected, c.mu + ndf.MuLambda(c.mu), 1e-7);
 }
@@ -114,8 +116,8 @@ TEST_P(VisibleNormals, SamplerMatchesPdfChiSquare) {
     for (int j = 0; j < kPhiBins; ++j) {
       const double p = IntegrateOverBin(
           [&](double theta, double phi) { return ndf.VisibleNormalPdf(o, Direction(theta, phi)); },
-          c.mu, thetaMax * i / kThetaBins, thetaMax * (i + 1) / kThetaBins, 2.0 * kPi * j / kPhiBins,
-          2.0 * kPi * (j + 1) / kPhiBins);
+          c.mu, thetaMax * i / kThetaBins, thetaMax * (i + 1) / kThetaBins,
+          2.0 * kPi * j / kPhiBins, 2.0 * kPi * (j + 1) / kPhiBins);
       expected[i * kPhiBins + j] = p;
       total += p;
     }

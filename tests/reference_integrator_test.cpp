@@ -26,10 +26,10 @@ void CheckAgainstTable(NdfKind kind, const std::string &file) {
     const double mu = row.Number("mu");
     const ReferenceAlbedo hc = IntegrateReferenceAlbedo(ndf, SmithForm::kCorrelated, mu);
     const ReferenceAlbedo sep = IntegrateReferenceAlbedo(ndf, SmithForm::kSeparable, mu);
-    worst[i] = std::max({std::abs(hc.E - row.Number("E_hc")), std::abs(hc.A - row.Number("A_hc")),
-                         std::abs(hc.B - row.Number("B_hc")), std::abs(sep.E - row.Number("E_sep")),
-                         std::abs(sep.A - row.Number("A_sep")),
-                         std::abs(sep.B - row.Number("B_sep"))});
+    worst[i] =
+        std::max({std::abs(hc.E - row.Number("E_hc")), std::abs(hc.A - row.Number("A_hc")),
+                  std::abs(hc.B - row.Number("B_hc")), std::abs(sep.E - row.Number("E_sep")),
+                  std::abs(sep.A - row.Number("A_sep")), std::abs(sep.B - row.Number("B_sep"))});
   });
   for (size_t i = 0; i < rows.size(); ++i)
     EXPECT_LE(worst[i], 1e-10) << file << " mu=" << rows[i].Text("mu")
@@ -60,7 +60,8 @@ TEST(ReferenceIntegrator, GrazingLimitsOfGgxAtAlphaOne) {
 
 TEST(ReferenceIntegrator, MirrorIsExact) {
   for (double mu : {0.0, 0.3, 1.0}) {
-    const ReferenceAlbedo r = IntegrateReferenceAlbedo(Ndf{NdfKind::kGgx, 0.0}, SmithForm::kCorrelated, mu);
+    const ReferenceAlbedo r =
+        IntegrateReferenceAlbedo(Ndf{NdfKind::kGgx, 0.0}, SmithForm::kCorrelated, mu);
     EXPECT_EQ(r.E, 1.0);
     EXPECT_EQ(r.B, std::pow(1.0 - mu, 5));
     EXPECT_EQ(r.A + r.B, 1.0);

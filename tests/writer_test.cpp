@@ -1,9 +1,10 @@
 // Round trips of the three formats: EXR read back through OpenImageIO (an
 // independent reader), .bin through its documented layout, and the C++
 // header compiled with -Werror and checked through its own lookups.
-#include <gtest/gtest.h>
+#include "lutbake/writer.h"
 
 #include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -12,7 +13,6 @@
 
 #include "lutbake/bake.h"
 #include "lutbake/binary_format.h"
-#include "lutbake/writer.h"
 
 namespace lutbake {
 namespace {
@@ -20,7 +20,8 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path TempDir(const std::string &name) {
-  const fs::path dir = fs::temp_directory_path() / ("lutbake_test_" + name + "_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("lutbake_test_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -56,7 +57,8 @@ TEST(ExrWriter, ReadsBackThroughOpenImageIO) {
     std::vector<float> pixels(t.values.size());
     ASSERT_TRUE(in->read_image(0, 0, 0, t.channels, OIIO::TypeDesc::FLOAT, pixels.data()));
     // Scanline 0 of the file is texel row y = 0 (the smoothest row).
-    for (size_t i = 0; i < pixels.size(); ++i) ASSERT_EQ(pixels[i], static_cast<float>(t.values[i])) << i;
+    for (size_t i = 0; i < pixels.size(); ++i)
+      ASSERT_EQ(pixels[i], static_cast<float>(t.values[i])) << i;
   }
   fs::remove_all(dir);
 }
@@ -67,7 +69,8 @@ TEST(ExrWriter, SameTableGivesSameBytes) {
   MakeExrWriter()->Write(t, (dir / "a.exr").string(), {});
   MakeExrWriter()->Write(t, (dir / "b.exr").string(), {});
   std::ifstream a(dir / "a.exr", std::ios::binary), b(dir / "b.exr", std::ios::binary);
-  const std::string sa((std::istreambuf_iterator<char>(a)), {}), sb((std::istreambuf_iterator<char>(b)), {});
+  const std::string sa((std::istreambuf_iterator<char>(a)), {}),
+      sb((std::istreambuf_iterator<char>(b)), {});
   EXPECT_FALSE(sa.empty());
   EXPECT_EQ(sa, sb);
   fs::remove_all(dir);
@@ -102,7 +105,8 @@ TEST(BinaryWriter, RoundTrip) {
     std::ifstream in(dir / "t.bin", std::ios::binary);
     bytes.assign((std::istreambuf_iterator<char>(in)), {});
   }
-  std::ofstream(dir / "cut.bin", std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size() - 3));
+  std::ofstream(dir / "cut.bin", std::ios::binary)
+      .write(bytes.data(), static_cast<std::streamsize>(bytes.size() - 3));
   EXPECT_THROW(ReadBinaryTable((dir / "cut.bin").string()), IoError);
   fs::remove_all(dir);
 }
@@ -116,7 +120,8 @@ TEST(CppHeaderWriter, CompilesWithWerrorAndLooksUpExactly) {
   for (TableKind kind : kAllTables) {
     // A size that is not a power of two, so texel centres are not exact in float.
     const Table t = SmallTable(kind, 10);
-    MakeCppHeaderWriter()->Write(t, (dir / (std::string(TableName(kind)) + ".h")).string(), options);
+    MakeCppHeaderWriter()->Write(t, (dir / (std::string(TableName(kind)) + ".h")).string(),
+                                 options);
     for (int y = 0; y < t.height(); ++y)
       for (int x = 0; x < t.width(); ++x) {
         const float fx = static_cast<float>((x + 0.5) / t.width());
@@ -124,11 +129,16 @@ TEST(CppHeaderWriter, CompilesWithWerrorAndLooksUpExactly) {
         for (int c = 0; c < t.channels; ++c) {
           const float expected = static_cast<float>(t.value(x, y, c));
           if (kind == TableKind::kDfg)
-            std::snprintf(line, sizeof line, "  fail += engine::luts::lookup_dfg(%.9gf, %.9gf)[%d] != %.9gf;\n", fx, fy, c, expected);
+            std::snprintf(line, sizeof line,
+                          "  fail += engine::luts::lookup_dfg(%.9gf, %.9gf)[%d] != %.9gf;\n", fx,
+                          fy, c, expected);
           else if (kind == TableKind::kE)
-            std::snprintf(line, sizeof line, "  fail += engine::luts::lookup_E(%.9gf, %.9gf) != %.9gf;\n", fx, fy, expected);
+            std::snprintf(line, sizeof line,
+                          "  fail += engine::luts::lookup_E(%.9gf, %.9gf) != %.9gf;\n", fx, fy,
+                          expected);
           else
-            std::snprintf(line, sizeof line, "  fail += engine::luts::lookup_%s(%.9gf) != %.9gf;\n", TableName(kind), fx, expected);
+            std::snprintf(line, sizeof line, "  fail += engine::luts::lookup_%s(%.9gf) != %.9gf;\n",
+                          TableName(kind), fx, expected);
           checks += line;
         }
       }
@@ -136,19 +146,23 @@ TEST(CppHeaderWriter, CompilesWithWerrorAndLooksUpExactly) {
   // Between centres and outside the range: bilinear and clamped.
   const Table e = SmallTable(TableKind::kE, 10);
   const double mid = 0.5 * (e.value(2, 3) + e.value(3, 3));
-  std::snprintf(line, sizeof line, "  fail += std::fabs(engine::luts::lookup_E(0.3f, 0.35f) - %.9gf) > 1e-6f;\n", mid);
+  std::snprintf(line, sizeof line,
+                "  fail += std::fabs(engine::luts::lookup_E(0.3f, 0.35f) - %.9gf) > 1e-6f;\n", mid);
   checks += line;
-  std::snprintf(line, sizeof line, "  fail += engine::luts::lookup_E(-5.0f, 7.0f) != %.9gf;\n", static_cast<float>(e.value(0, 9)));
+  std::snprintf(line, sizeof line, "  fail += engine::luts::lookup_E(-5.0f, 7.0f) != %.9gf;\n",
+                static_cast<float>(e.value(0, 9)));
   checks += line;
   checks += "  fail += !(engine::luts::lookup_E(std::nanf(\"\"), 0.5f) >= 0.0f);\n";
-  std::ofstream(dir / "main.cpp") << "#include <cmath>\n#include <cstdio>\n#include \"E.h\"\n#include \"Eavg.h\"\n"
-                                     "#include \"Favg.h\"\n#include \"dfg.h\"\nint main() {\n  int fail = 0;\n"
-                                  << checks << "  std::printf(\"%d failures\\n\", fail);\n  return fail == 0 ? 0 : 1;\n}\n";
+  std::ofstream(dir / "main.cpp")
+      << "#include <cmath>\n#include <cstdio>\n#include \"E.h\"\n#include \"Eavg.h\"\n"
+         "#include \"Favg.h\"\n#include \"dfg.h\"\nint main() {\n  int fail = 0;\n"
+      << checks << "  std::printf(\"%d failures\\n\", fail);\n  return fail == 0 ? 0 : 1;\n}\n";
   for (const char *standard : {"c++17", "c++20"}) {
     const std::string exe = (dir / (std::string("check_") + standard)).string();
     const std::string command = std::string(LUTBAKE_TEST_CXX) + " -std=" + standard +
-                                " -Wall -Wextra -Wpedantic -Werror -fno-exceptions -I" + dir.string() +
-                                " " + (dir / "main.cpp").string() + " -o " + exe + " && " + exe;
+                                " -Wall -Wextra -Wpedantic -Werror -fno-exceptions -I" +
+                                dir.string() + " " + (dir / "main.cpp").string() + " -o " + exe +
+                                " && " + exe;
     EXPECT_EQ(std::system(command.c_str()), 0) << command;
   }
   fs::remove_all(dir);

@@ -28,7 +28,7 @@ enum class SampleStrategy { kVisibleNormal, kNdf };
 std::string_view ToString(SampleStrategy strategy);
 
 struct AlbedoSample {
-  double weight = 0.0;       // contribution to E
+  double weight = 0.0;         // contribution to E
   double schlickWeight = 0.0;  // Fc = (1 - o.h)^5, so that B gets weight * Fc
 };
 

@@ -26,9 +26,7 @@ constexpr double Pow5(double x) {
   return x2 * x2 * x;
 }
 
-constexpr double Clamp(double x, double lo, double hi) {
-  return x < lo ? lo : (x > hi ? hi : x);
-}
+constexpr double Clamp(double x, double lo, double hi) { return x < lo ? lo : (x > hi ? hi : x); }
 
 // sqrt of a quantity that is non-negative in exact arithmetic but may come out
 // as a tiny negative number after rounding (1 - mu^2 at mu = 1, for example).

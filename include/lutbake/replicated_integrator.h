@@ -63,7 +63,8 @@ ReplicatedEstimate<Channels> IntegrateReplicated(const SampleFn &sample, uint64_
       const std::array<double, Channels> value = sample(u);
       for (int c = 0; c < Channels; ++c) sums[c].Add(value[c]);
     }
-    for (int c = 0; c < Channels; ++c) replicateMeans[r][c] = sums[c].Value() / static_cast<double>(n);
+    for (int c = 0; c < Channels; ++c)
+      replicateMeans[r][c] = sums[c].Value() / static_cast<double>(n);
   }
   ReplicatedEstimate<Channels> result;
   for (int c = 0; c < Channels; ++c) {

@@ -31,16 +31,14 @@ struct Axis {
   // Texel-centre convention: the value of texel i.
   double TexelCenter(int i) const { return min + (max - min) * ((i + 0.5) / count); }
   // The inverse: the continuous texel coordinate of a value (i at centres).
-  double TexelCoordinate(double value) const {
-    return (value - min) / (max - min) * count - 0.5;
-  }
+  double TexelCoordinate(double value) const { return (value - min) / (max - min) * count - 0.5; }
 };
 
 struct Table {
   TableKind kind = TableKind::kE;
-  Axis x;          // width: the first axis (mu, or the Fresnel parameter)
-  Axis y;          // height: perceptual roughness, or the second Fresnel axis;
-                   // a 1D table has y.count = 1 and y.name empty
+  Axis x;  // width: the first axis (mu, or the Fresnel parameter)
+  Axis y;  // height: perceptual roughness, or the second Fresnel axis;
+           // a 1D table has y.count = 1 and y.name empty
   int channels = 1;
   std::vector<std::string> channelNames;  // EXR channel names: {"Y"} or {"R", "G"}
   std::vector<double> values;             // see the layout above

@@ -105,13 +105,16 @@ CLI::Validator CppNamespace() {
           ok = alpha || (digit && !start);
           start = false;
         }
-        if (!ok || start) return "'" + value + "' is not a C++ namespace name (e.g. my_engine::luts)";
+        if (!ok || start)
+          return "'" + value + "' is not a C++ namespace name (e.g. my_engine::luts)";
         return {};
       },
       "C++ namespace");
 }
 
-NdfKind ParseNdf(const std::string &s) { return s == "beckmann" ? NdfKind::kBeckmann : NdfKind::kGgx; }
+NdfKind ParseNdf(const std::string &s) {
+  return s == "beckmann" ? NdfKind::kBeckmann : NdfKind::kGgx;
+}
 SmithForm ParseSmith(const std::string &s) {
   return s == "separable" ? SmithForm::kSeparable : SmithForm::kCorrelated;
 }
@@ -149,7 +152,8 @@ std::string PrepareOutputDirectory(const std::string &dir, bool *created, bool *
     if (ec) return "cannot create the directory: " + ec.message();
   }
   // Probe by writing, which also catches read-only file systems.
-  const std::string probe = (fs::path(dir) / (".lutbake-probe-" + std::to_string(::getpid()))).string();
+  const std::string probe =
+      (fs::path(dir) / (".lutbake-probe-" + std::to_string(::getpid()))).string();
   std::FILE *f = std::fopen(probe.c_str(), "wb");
   if (!f) {
     const std::string reason = std::strerror(errno);
@@ -200,7 +204,8 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
       ->capture_default_str()
       ->type_name("S")
       ->check(InRange<uint64_t>(0, UINT64_MAX, "(any unsigned 64-bit integer)"));
-  app.add_option("--threads", o.threads, "Worker threads (default: all cores); output does not depend on it")
+  app.add_option("--threads", o.threads,
+                 "Worker threads (default: all cores); output does not depend on it")
       ->type_name("N")
       ->check(InRange(1, kMaxThreads, "threads"));
   app.add_option("--format", o.formats, "Files to write per table: T.exr, T.bin, T.h")
@@ -221,7 +226,8 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
   settings.smith = ParseSmith(o.smith);
   settings.fresnel = ParseFresnel(o.fresnel);
   settings.estimator = ParseEstimator(o.estimator);
-  if (o.size > 0) settings.sizeE = settings.sizeEavg = settings.sizeFavg = settings.sizeDfg = o.size;
+  if (o.size > 0)
+    settings.sizeE = settings.sizeEavg = settings.sizeFavg = settings.sizeDfg = o.size;
   settings.samples = o.samples;
   settings.seed = o.seed;
   settings.commandLine = commandLine;
@@ -238,7 +244,9 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
     return usageError ? 2 : 1;
   }
 
-  const int threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = o.threads > 0
+                          ? o.threads
+                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
                                   static_cast<size_t>(threads));
 
@@ -269,14 +277,17 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
       std::snprintf(line, sizeof line,
                     "%-5s %4d x %-4d %s samples/texel  %7.2f s  error max %.2e  rms %.2e\n",
                     TableName(kind), table.width(), table.height(),
-                    samples ? samples->c_str() : "n/a", seconds, table.MaxError(), table.RmsError());
+                    samples ? samples->c_str() : "n/a", seconds, table.MaxError(),
+                    table.RmsError());
       std::cerr << line;
       nlohmann::ordered_json entry;
       entry["name"] = TableName(kind);
       entry["width"] = table.width();
       entry["height"] = table.height();
       entry["channels"] = table.channels;
-      entry["samplesPerTexel"] = samples && *samples != "n/a" ? nlohmann::ordered_json(std::stoull(*samples)) : nlohmann::ordered_json();
+      entry["samplesPerTexel"] = samples && *samples != "n/a"
+                                     ? nlohmann::ordered_json(std::stoull(*samples))
+                                     : nlohmann::ordered_json();
       entry["estimator"] = *table.FindMetadata("estimator");
       entry["seconds"] = seconds;
       entry["errorMax"] = table.MaxError();

@@ -1,7 +1,6 @@
 // lutbake: the command-line shell around the library. Parses options, calls
 // the library, maps failures to exit codes (2 usage, 1 runtime, 0 success).
 #include <CLI/CLI.hpp>
-
 #include <iostream>
 
 #include "bake_command.h"
@@ -19,14 +18,17 @@ std::string QuoteArgument(const std::string &arg) {
 }  // namespace
 
 int main(int argc, char **argv) {
-  CLI::App app{"lutbake: bakes microfacet lookup tables (Kulla-Conty E, E_avg, F_avg and the "
-               "split-sum DFG) with a measured error for every texel."};
+  CLI::App app{
+      "lutbake: bakes microfacet lookup tables (Kulla-Conty E, E_avg, F_avg and the "
+      "split-sum DFG) with a measured error for every texel."};
   app.set_version_flag("--version", std::string("lutbake ") + lutbake::LutbakeVersion());
   app.require_subcommand(1);
-  app.footer("Example:\n  lutbake bake --out out          # the four default tables\n"
-             "Run 'lutbake bake --help' for every option of bake.");
+  app.footer(
+      "Example:\n  lutbake bake --out out          # the four default tables\n"
+      "Run 'lutbake bake --help' for every option of bake.");
   lutbake::cli::BakeOptions bakeOptions;
-  CLI::App *bake = app.add_subcommand("bake", "Bake tables into a directory (EXR, .bin, C++ header)");
+  CLI::App *bake =
+      app.add_subcommand("bake", "Bake tables into a directory (EXR, .bin, C++ header)");
   lutbake::cli::SetupBakeCommand(*bake, bakeOptions);
 
   std::string commandLine = "lutbake";
