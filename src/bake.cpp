@@ -71,6 +71,11 @@ struct TexelResult {
   double error[2] = {0, 0};
 };
 
+AlbedoEstimator MakeEstimator(const BakeSettings &s, const Ndf &ndf) {
+  return {ndf, s.smith,
+          s.estimator == Estimator::kNdf ? SampleStrategy::kNdf : SampleStrategy::kVisibleNormal};
+}
+
 uint64_t TexelSeed(TableKind kind, size_t texel, uint64_t seed) {
   return HashValues({static_cast<uint64_t>(kind), texel, seed});
 }
@@ -89,9 +94,7 @@ TexelResult AlbedoTexel(TableKind kind, const BakeSettings &s, double mu_o, doub
     out.error[0] = out.error[1] = r.error;
     return out;
   }
-  const AlbedoEstimator estimator{
-      ndf, s.smith,
-      s.estimator == Estimator::kNdf ? SampleStrategy::kNdf : SampleStrategy::kVisibleNormal};
+  const AlbedoEstimator estimator = MakeEstimator(s, ndf);
   const Vec3 o = ViewDirection(mu_o);
   const double L_o = ndf.MuLambda(mu_o);
   const uint64_t seed = TexelSeed(kind, texel, s.seed);
@@ -130,9 +133,7 @@ TexelResult AverageTexel(const BakeSettings &s, double alpha, size_t texel) {
     out.error[0] = r.error;
     return out;
   }
-  const AlbedoEstimator estimator{
-      ndf, s.smith,
-      s.estimator == Estimator::kNdf ? SampleStrategy::kNdf : SampleStrategy::kVisibleNormal};
+  const AlbedoEstimator estimator = MakeEstimator(s, ndf);
   const auto e = IntegrateReplicated<3, 1>(
       [&](const double(&u)[3]) {
         const double mu_o = std::sqrt(u[0]);

@@ -30,12 +30,6 @@ std::string DoubleLiteral(double value) {
   return s;
 }
 
-std::string ParameterName(const Axis &axis) {
-  if (axis.name == "mu") return "mu";
-  if (axis.name == "perceptualRoughness") return "perceptualRoughness";
-  return axis.name;
-}
-
 // The shared lookup helpers, emitted into each table's own namespace so that
 // several generated headers can be included together.
 const char *kCoordinateHelper =
@@ -122,8 +116,8 @@ class CppHeaderWriter final : public TableWriter {
          "         wy * ((1.0 - wx) * Texel(x0, y1, c) + wx * Texel(x1, y1, c));\n}\n\n";
     h << "}  // namespace " << name << "_table\n\n";
 
-    const std::string px = ParameterName(table.x);
-    const std::string py = table.is2D() ? ParameterName(table.y) : "";
+    const std::string px = table.x.name;
+    const std::string py = table.is2D() ? table.y.name : "";
     const std::string t = name + "_table::";
     std::string signature, body;
     body = "  std::size_t x0 = 0, y0 = 0;\n  double wx = 0.0, wy = 0.0;\n";

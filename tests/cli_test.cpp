@@ -91,9 +91,8 @@ std::string ReadFile(const fs::path &p) {
 
 TEST(Cli, OutputIsByteIdenticalForOneAndTwoThreads) {
   const fs::path a = Scratch("t1"), b = Scratch("t2");
-  // The command line is recorded in every file, so both runs use the same
-  // arguments apart from the directory, given as a relative path from each
-  // parent.
+  // The command line (with the directory and --threads) is recorded in every
+  // file; it is blanked out below before the byte comparison.
   ASSERT_EQ(Lutbake("bake --out " + a.string() + " --size 8 --samples 128 --threads 1").status, 0);
   ASSERT_EQ(Lutbake("bake --out " + b.string() + " --size 8 --samples 128 --threads 2").status, 0);
   int compared = 0;

@@ -108,7 +108,8 @@ TEST_P(VisibleNormals, SamplerMatchesPdfChiSquare) {
   const Vec3 o = ViewDirection(c.mu);
   constexpr int kThetaBins = 16, kPhiBins = 16;
   constexpr int kSamples = 200000;
-  // Bins in theta up to the range that holds the mass: 4 alpha-widths, capped at pi/2.
+  // Bins in theta over the range that holds most of the mass, atan(6 alpha) + 0.2
+  // capped at pi/2; one more cell holds everything beyond.
   const double thetaMax = std::min(0.5 * kPi, std::atan(6.0 * c.alpha) + 0.2);
   std::vector<double> expected(kThetaBins * kPhiBins + 1, 0.0);
   double total = 0.0;
