@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdio>
 
 #include "lutbake/albedo_estimator.h"
@@ -21,10 +22,22 @@ const char *LutbakeVersion() { return LUTBAKE_VERSION; }
 std::string_view ToString(Estimator estimator) {
   switch (estimator) {
     case Estimator::kVisibleNormal: return "vndf";
+    case Estimator::kVisibleNormalRandom: return "vndf-random";
     case Estimator::kNdf: return "ndf";
+    case Estimator::kCosine: return "cosine";
+    case Estimator::kUniform: return "uniform";
     case Estimator::kQuadrature: return "quadrature";
   }
   return "?";
+}
+
+bool ParseEstimator(std::string_view name, Estimator *estimator) {
+  for (Estimator e : kAllEstimators)
+    if (name == ToString(e)) {
+      *estimator = e;
+      return true;
+    }
+  return false;
 }
 
 Axis MuAxis(int count) { return {"mu", 0.0, 1.0, count}; }
@@ -47,6 +60,7 @@ void FresnelAxes(FresnelModel model, int count, Axis *x, Axis *y) {
 }
 
 uint64_t SamplesPerTexel(TableKind kind, const BakeSettings &settings) {
+  if (kind == TableKind::kFavg || settings.estimator == Estimator::kQuadrature) return 0;
   if (kind == TableKind::kEavg) return settings.samples * kAverageSampleFactor;
   return settings.samples;
 }
@@ -65,86 +79,176 @@ std::string DescribeAxis(const Axis &axis) {
 }
 
 // The per-texel integral, whatever the estimator: returns the values and
-// their error bounds for `channels` channels.
-struct TexelResult {
-  double value[2] = {0, 0};
-  double error[2] = {0, 0};
-};
+// their error bounds for up to 2 channels, and what it cost.
+using TexelResult = PointValue;
 
-AlbedoEstimator MakeEstimator(const BakeSettings &s, const Ndf &ndf) {
-  return {ndf, s.smith,
-          s.estimator == Estimator::kNdf ? SampleStrategy::kNdf : SampleStrategy::kVisibleNormal};
+SampleStrategy StrategyOf(Estimator estimator) {
+  switch (estimator) {
+    case Estimator::kNdf: return SampleStrategy::kNdf;
+    case Estimator::kCosine: return SampleStrategy::kCosine;
+    case Estimator::kUniform: return SampleStrategy::kUniform;
+    default: return SampleStrategy::kVisibleNormal;
+  }
+}
+
+PointSet PointSetOf(Estimator estimator) {
+  return estimator == Estimator::kVisibleNormal || estimator == Estimator::kNdf
+             ? PointSet::kScrambledSobol
+             : PointSet::kIndependentRandom;
 }
 
 uint64_t TexelSeed(TableKind kind, size_t texel, uint64_t seed) {
   return HashValues({static_cast<uint64_t>(kind), texel, seed});
 }
 
-TexelResult AlbedoTexel(TableKind kind, const BakeSettings &s, double mu_o, double alpha,
-                        size_t texel) {
-  const Ndf ndf{s.ndf, alpha};
+double QuadratureTolerance(const BakeSettings &s) {
+  // A tolerance run asks the quadrature for EPS / 8: its reported bound,
+  // twice the estimate plus the floor, then stays below EPS down to 1e-9.
+  return s.tolerance > 0.0 ? 0.125 * s.tolerance : kQuadratureDefaultTolerance;
+}
+
+TexelResult QuadratureAlbedo(bool split, const BakeSettings &s, const Ndf &ndf, double mu_o) {
+  const ReferenceAlbedo r = IntegrateReferenceAlbedo(ndf, s.smith, mu_o, QuadratureTolerance(s));
   TexelResult out;
+  out.value[0] = split ? r.A : r.E;
+  out.value[1] = r.B;
+  // A mirror is exact (error 0); otherwise the estimate plus the floor.
+  const double bound =
+      ndf.alpha == 0.0 ? 0.0 : kQuadratureErrorFactor * r.error + kQuadratureErrorFloor;
+  out.error[0] = out.error[1] = bound;
+  out.evaluations = static_cast<uint64_t>(r.evaluations);
+  out.quadrature = true;
+  return out;
+}
+
+TexelResult QuadratureAverage(const BakeSettings &s, const Ndf &ndf) {
+  const double tolerance =
+      s.tolerance > 0.0 ? QuadratureTolerance(s) : 10.0 * kQuadratureDefaultTolerance;
+  const ReferenceAverage r = IntegrateReferenceAlbedoAverage(ndf, s.smith, tolerance);
+  TexelResult out;
+  out.value[0] = r.value;
+  out.error[0] =
+      ndf.alpha == 0.0 ? 0.0 : kQuadratureErrorFactor * r.error + kQuadratureErrorFloor;
+  out.evaluations = r.evaluations;
+  out.quadrature = true;
+  return out;
+}
+
+// Runs a sampled estimator on one texel: a fixed number of samples, or in
+// rounds (doubling) until the bound is at most the tolerance. Returns false
+// when a tolerance run decides that the quadrature is the cheaper way to
+// EPS (the caller then integrates the texel with it).
+template <int Dims, int Channels, typename SampleFn>
+bool SampleTexel(const BakeSettings &s, const SampleFn &sample, uint64_t samples,
+                 uint64_t texelSeed, TexelResult *out) {
+  const PointSet points = PointSetOf(s.estimator);
+  const auto finish = [&](const ReplicatedAccumulator<Dims, Channels> &acc) {
+    const ReplicatedEstimate<Channels> e = acc.Estimate();
+    const double sigmas = StudentT99(acc.replicates() - 1);
+    // The spread of the replicates cannot see an event rarer than about one
+    // in N: GGX's tail past the horizon is such an event (probability up to
+    // ~1e-4, weight 0 instead of ~1), and when no sample meets it every
+    // replicate is off by the same amount. With weights in [0, 1], an event
+    // that N samples all missed has, at 99% confidence, probability below
+    // -ln(0.01) / N, and moves the integral by at most that much: the bound
+    // adds it.
+    const double unseen = kUnseenEventCount / static_cast<double>(acc.samples());
+    for (int c = 0; c < Channels; ++c) {
+      out->value[c] = e.mean[c];
+      out->error[c] = sigmas * e.standardError[c] + unseen;
+    }
+    out->samples = acc.samples();
+  };
+  if (s.tolerance <= 0.0) {
+    const int k = static_cast<int>(std::max<uint64_t>(1, std::min<uint64_t>(s.replicates, samples)));
+    ReplicatedAccumulator<Dims, Channels> acc(k, texelSeed, points);
+    for (int r = 0; r < k; ++r)
+      acc.ExtendReplicate(sample, r,
+                          samples / k + (static_cast<uint64_t>(r) < samples % k ? 1 : 0));
+    finish(acc);
+    return true;
+  }
+  ReplicatedAccumulator<Dims, Channels> acc(s.replicates, texelSeed, points);
+  const uint64_t k = static_cast<uint64_t>(acc.replicates());
+  // When the unseen-event term alone needs more samples than the quadrature
+  // costs, no sampling round can pay off: go to the quadrature at once.
+  const double minimumSamples = kUnseenEventCount / s.tolerance;
+  if (s.allowQuadratureSwitch && minimumSamples > static_cast<double>(kQuadratureSwitchSamples))
+    return false;
+  uint64_t perReplicate = std::max<uint64_t>(2, samples / k);
+  for (;;) {
+    acc.Extend(sample, perReplicate);
+    finish(acc);
+    const double bound = *std::max_element(out->error, out->error + Channels);
+    if (bound <= s.tolerance) return true;
+    // Error ~ 1/N: the samples this texel would need.
+    const double needed = static_cast<double>(acc.samples()) * bound / s.tolerance;
+    if (s.allowQuadratureSwitch && needed > static_cast<double>(kQuadratureSwitchSamples))
+      return false;
+    if (2 * perReplicate * k > s.maxSamples) return true;  // caller sees bound > EPS
+    perReplicate *= 2;
+  }
+}
+
+}  // namespace
+
+PointValue EvaluateAlbedo(TableKind kind, const BakeSettings &s, double mu_o, double alpha,
+                          uint64_t pointSeed) {
+  const Ndf ndf{s.ndf, alpha};
   const bool split = kind == TableKind::kDfg;
   // A mirror (alpha = 0) is exact, not sampled: its only microfacet is n, so
   // the light is the mirror direction, G2 = 1, and E = 1, B = (1 - mu)^5.
-  if (alpha == 0.0 || s.estimator == Estimator::kQuadrature) {
-    const ReferenceAlbedo r = IntegrateReferenceAlbedo(ndf, s.smith, mu_o);
-    out.value[0] = split ? r.A : r.E;
-    out.value[1] = r.B;
-    out.error[0] = out.error[1] = r.error;
-    return out;
-  }
-  const AlbedoEstimator estimator = MakeEstimator(s, ndf);
+  if (alpha == 0.0 || s.estimator == Estimator::kQuadrature)
+    return QuadratureAlbedo(split, s, ndf, mu_o);
+  const AlbedoEstimator estimator{ndf, s.smith, StrategyOf(s.estimator)};
   const Vec3 o = ViewDirection(mu_o);
   const double L_o = ndf.MuLambda(mu_o);
-  const uint64_t seed = TexelSeed(kind, texel, s.seed);
+  TexelResult out;
+  bool sampled;
   if (split) {
-    const auto e = IntegrateReplicated<2, 2>(
+    sampled = SampleTexel<2, 2>(
+        s,
         [&](const double(&u)[2]) {
           const AlbedoSample a = estimator.Sample(o, L_o, u[0], u[1]);
           return std::array<double, 2>{a.weight * (1.0 - a.schlickWeight),
                                        a.weight * a.schlickWeight};
         },
-        s.samples, s.replicates, seed);
-    for (int c = 0; c < 2; ++c) {
-      out.value[c] = e.mean[c];
-      out.error[c] = kErrorSigmas * e.standardError[c];
-    }
+        s.samples, pointSeed, &out);
   } else {
-    const auto e = IntegrateReplicated<2, 1>(
+    sampled = SampleTexel<2, 1>(
+        s,
         [&](const double(&u)[2]) {
           return std::array<double, 1>{estimator.Sample(o, L_o, u[0], u[1]).weight};
         },
-        s.samples, s.replicates, seed);
-    out.value[0] = e.mean[0];
-    out.error[0] = kErrorSigmas * e.standardError[0];
+        s.samples, pointSeed, &out);
   }
-  return out;
+  if (sampled) return out;
+  TexelResult q = QuadratureAlbedo(split, s, ndf, mu_o);
+  q.samples = out.samples;  // the rounds spent before switching still count
+  return q;
 }
+
+namespace {
 
 // E_avg(r) = 2 integral_0^1 E(mu) mu dmu as one 3D integral: mu = sqrt(u0)
 // has density 2 mu, so the weight is the E estimator's at that mu.
 TexelResult AverageTexel(const BakeSettings &s, double alpha, size_t texel) {
   const Ndf ndf{s.ndf, alpha};
+  if (alpha == 0.0 || s.estimator == Estimator::kQuadrature) return QuadratureAverage(s, ndf);
+  const AlbedoEstimator estimator{ndf, s.smith, StrategyOf(s.estimator)};
   TexelResult out;
-  if (alpha == 0.0 || s.estimator == Estimator::kQuadrature) {
-    const ReferenceAverage r = IntegrateReferenceAlbedoAverage(ndf, s.smith);
-    out.value[0] = r.value;
-    out.error[0] = r.error;
-    return out;
-  }
-  const AlbedoEstimator estimator = MakeEstimator(s, ndf);
-  const auto e = IntegrateReplicated<3, 1>(
+  const bool sampled = SampleTexel<3, 1>(
+      s,
       [&](const double(&u)[3]) {
         const double mu_o = std::sqrt(u[0]);
         const Vec3 o = ViewDirection(mu_o);
         return std::array<double, 1>{estimator.Sample(o, ndf.MuLambda(mu_o), u[1], u[2]).weight};
       },
-      SamplesPerTexel(TableKind::kEavg, s), s.replicates,
-      TexelSeed(TableKind::kEavg, texel, s.seed));
-  out.value[0] = e.mean[0];
-  out.error[0] = kErrorSigmas * e.standardError[0];
-  return out;
+      s.samples * kAverageSampleFactor, TexelSeed(TableKind::kEavg, texel, s.seed), &out);
+  if (sampled) return out;
+  TexelResult q = QuadratureAverage(s, ndf);
+  q.samples = out.samples;
+  return q;
 }
 
 TexelResult FresnelTexel(FresnelModel model, double x, double y) {
@@ -162,7 +266,9 @@ TexelResult FresnelTexel(FresnelModel model, double x, double y) {
 
 }  // namespace
 
-Table BakeTable(TableKind kind, const BakeSettings &s, const ProgressFn &progress) {
+Table BakeTable(TableKind kind, const BakeSettings &s, const ProgressFn &progress,
+                BakeStats *statsOut) {
+  const auto start = std::chrono::steady_clock::now();
   Table table;
   table.kind = kind;
   switch (kind) {
@@ -187,6 +293,8 @@ Table BakeTable(TableKind kind, const BakeSettings &s, const ProgressFn &progres
   table.values.assign(texels * table.channels, 0.0);
   table.errors.assign(texels * table.channels, 0.0);
 
+  std::vector<uint64_t> texelSamples(texels, 0), texelEvaluations(texels, 0);
+  std::vector<uint8_t> texelQuadrature(texels, 0);
   std::atomic<size_t> done{0};
   tbb::parallel_for(
       tbb::blocked_range<size_t>(0, texels), [&](const tbb::blocked_range<size_t> &r) {
@@ -198,7 +306,8 @@ Table BakeTable(TableKind kind, const BakeSettings &s, const ProgressFn &progres
             case TableKind::kE:
             case TableKind::kDfg: {
               const double r_ = table.y.TexelCenter(iy);
-              texel = AlbedoTexel(kind, s, table.x.TexelCenter(ix), r_ * r_, t);
+              texel = EvaluateAlbedo(kind, s, table.x.TexelCenter(ix), r_ * r_,
+                                     TexelSeed(kind, t, s.seed));
               break;
             }
             case TableKind::kEavg: {
@@ -214,13 +323,35 @@ Table BakeTable(TableKind kind, const BakeSettings &s, const ProgressFn &progres
             table.values[t * table.channels + c] = texel.value[c];
             table.errors[t * table.channels + c] = texel.error[c];
           }
+          texelSamples[t] = texel.samples;
+          texelEvaluations[t] = texel.evaluations;
+          texelQuadrature[t] = texel.quadrature ? 1 : 0;
         }
         const size_t now = done.fetch_add(r.size()) + r.size();
         if (progress) progress(static_cast<double>(now) / static_cast<double>(texels));
       });
 
+  BakeStats stats;
+  for (size_t t = 0; t < texels; ++t) {
+    stats.samples += texelSamples[t];
+    stats.maxTexelSamples = std::max(stats.maxTexelSamples, texelSamples[t]);
+    stats.evaluations += texelEvaluations[t];
+    stats.quadratureTexels += texelQuadrature[t];
+    if (s.tolerance > 0.0)
+      for (int c = 0; c < table.channels; ++c)
+        if (!(table.errors[t * table.channels + c] <= s.tolerance)) {
+          ++stats.unconverged;
+          break;
+        }
+  }
+
   const bool albedo = kind != TableKind::kFavg;
   const bool sampled = albedo && s.estimator != Estimator::kQuadrature;
+  const bool tolerance = sampled && s.tolerance > 0.0;
+  const int replicates = tolerance ? std::clamp(s.replicates, 1, 64)
+                                   : static_cast<int>(std::min<uint64_t>(
+                                         s.replicates, std::max<uint64_t>(1, SamplesPerTexel(kind, s))));
+  const bool random = PointSetOf(s.estimator) == PointSet::kIndependentRandom;
   auto &m = table.metadata;
   m.emplace_back("table", TableName(kind));
   m.emplace_back("ndf", albedo ? std::string(ToString(s.ndf)) : "none");
@@ -234,22 +365,38 @@ Table BakeTable(TableKind kind, const BakeSettings &s, const ProgressFn &progres
                  "mapped linearly onto [min, max]; y = 0 first");
   m.emplace_back("channelLayout", kind == TableKind::kDfg ? "R = A (scale), G = B (bias)"
                                                           : "Y = " + std::string(TableName(kind)));
-  m.emplace_back("estimator",
-                 sampled ? std::string(ToString(s.estimator)) + " with Owen-scrambled Sobol points"
-                         : "adaptive Gauss-Kronrod quadrature");
-  m.emplace_back("samplesPerTexel", sampled ? std::to_string(SamplesPerTexel(kind, s)) : "n/a");
-  m.emplace_back(
-      "replicates",
-      sampled ? std::to_string(std::min<uint64_t>(s.replicates, SamplesPerTexel(kind, s))) : "n/a");
+  std::string estimatorText = "adaptive Gauss-Kronrod quadrature";
+  if (sampled)
+    estimatorText = std::string(ToString(s.estimator)) +
+                    (random ? " with independent random points" : " with Owen-scrambled Sobol points");
+  if (tolerance && s.allowQuadratureSwitch)
+    estimatorText += "; texels for which the quadrature is cheaper switch to it";
+  m.emplace_back("estimator", estimatorText);
+  m.emplace_back("tolerance", s.tolerance > 0.0 && albedo ? FormatDouble(s.tolerance) : "none");
+  m.emplace_back("samplesPerTexel",
+                 !sampled    ? "n/a"
+                 : tolerance ? "adaptive, mean " +
+                                   FormatDouble(static_cast<double>(stats.samples) / texels) +
+                                   ", max " + std::to_string(stats.maxTexelSamples)
+                             : std::to_string(SamplesPerTexel(kind, s)));
+  m.emplace_back("quadratureTexels", albedo ? std::to_string(stats.quadratureTexels) : "n/a");
+  m.emplace_back("replicates", sampled ? std::to_string(replicates) : "n/a");
   m.emplace_back("seed", std::to_string(s.seed));
-  m.emplace_back("errorBound",
-                 sampled ? "5.841 standard errors (Student t, 3 dof, 99%) from the spread of "
-                           "4 independent scrambles"
-                         : "quadrature error bound");
+  char bound[256];
+  std::snprintf(bound, sizeof bound,
+                "sampled texels: %.3f standard errors (Student t, %d dof, two-sided 99%%) from the "
+                "spread of %d independent %s, plus 4.6 / N for events no sample met; quadrature texels: 2 x the Gauss-Kronrod estimate + %.0e",
+                StudentT99(replicates - 1), replicates - 1, replicates,
+                random ? "random point sets" : "scrambles", kQuadratureErrorFloor);
+  m.emplace_back("errorBound", !albedo ? "Gauss-Kronrod error estimate"
+                               : sampled ? bound
+                                         : "2 x the Gauss-Kronrod estimate + 1e-10");
   m.emplace_back("errorMax", FormatDouble(table.MaxError()));
   m.emplace_back("errorRms", FormatDouble(table.RmsError()));
   m.emplace_back("lutbakeVersion", LutbakeVersion());
   m.emplace_back("commandLine", s.commandLine);
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (statsOut) *statsOut = stats;
   return table;
 }
 

@@ -1,5 +1,8 @@
 #include "lutbake/reference_integrator.h"
 
+#include <array>
+#include <vector>
+
 #include "lutbake/gauss_kronrod.h"
 #include "lutbake/math.h"
 
@@ -13,19 +16,17 @@ constexpr double kBeckmannSlopeCut = 40.0;
 
 // Initial subdivisions: the grazing features (theta_max ~ alpha near
 // phi = pi) are narrow, and a single 15-point rule can step over them.
-constexpr int kOuterStartIntervals = 16;
-constexpr int kInnerStartIntervals = 8;
-
-enum class Channel { kA, kB };
+constexpr int kOuterUniformIntervals = 4;
+constexpr double kInnerBreakFractions[] = {0.5, 0.75, 0.875};
 
 struct InnerSetup {
   double s_o, c_o, L_o, cosPhi;
 };
 
 // Integrand of the inner integral at inner variable v (psi for GGX, t for
-// Beckmann), including the Jacobian d(xi)/dv.
-double InnerIntegrand(const Ndf &ndf, SmithForm smith, const InnerSetup &s, Channel channel,
-                      double v) {
+// Beckmann), including the Jacobian d(xi)/dv: {A part, B part}.
+std::array<double, 2> InnerIntegrand(const Ndf &ndf, SmithForm smith, const InnerSetup &s,
+                                     double v) {
   double cosTheta, sinTheta, jacobian;
   if (ndf.kind == NdfKind::kGgx) {
     const double cosPsi = std::cos(v), sinPsi = std::sin(v);
@@ -41,21 +42,54 @@ double InnerIntegrand(const Ndf &ndf, SmithForm smith, const InnerSetup &s, Chan
   }
   const double oh = s.s_o * sinTheta * s.cosPhi + s.c_o * cosTheta;
   const double mu_i = 2.0 * oh * cosTheta - s.c_o;
-  if (mu_i <= 0.0 || oh <= 0.0 || cosTheta <= 0.0) return 0.0;
+  if (mu_i <= 0.0 || oh <= 0.0 || cosTheta <= 0.0) return {0.0, 0.0};
   // (o.h) / cos(theta) * G2 / mu_o, the integrand in xi.
-  const double w = (oh / cosTheta) * SmithG2OverMuO(smith, s.c_o, mu_i, s.L_o, ndf.MuLambda(mu_i));
+  const double w = jacobian * (oh / cosTheta) *
+                   SmithG2OverMuO(smith, s.c_o, mu_i, s.L_o, ndf.MuLambda(mu_i));
   const double fc = Pow5(1.0 - oh);
-  return jacobian * w * (channel == Channel::kB ? fc : 1.0 - fc);
+  return {w * (1.0 - fc), w * fc};
 }
 
-QuadratureResult IntegrateChannel(const Ndf &ndf, SmithForm smith, double mu_o, Channel channel,
-                                  double tolerance) {
+// Outer (azimuth) breaks. theta_max(phi) swings from about pi/2 to about 0
+// as cos(phi) crosses [-mu_o, mu_o]: near grazing view that is a feature
+// of width ~mu_o around phi = pi/2 (a jump at mu_o = 0). Breaks at
+// pi/2 +- mu_o 4^k grade the start toward it; pi/2 itself is always a break.
+std::vector<double> OuterBreaks(double mu_o) {
+  std::vector<double> below, breaks;
+  for (double d = std::max(mu_o, 1e-6); d < 0.4 * kPi; d *= 4.0) below.push_back(d);
+  breaks.push_back(0.0);
+  for (int k = 1; k < kOuterUniformIntervals; ++k)
+    if (0.5 * kPi * k / kOuterUniformIntervals < 0.5 * kPi - below.back())
+      breaks.push_back(0.5 * kPi * k / kOuterUniformIntervals);
+  for (auto it = below.rbegin(); it != below.rend(); ++it) breaks.push_back(0.5 * kPi - *it);
+  breaks.push_back(0.5 * kPi);
+  for (double d : below) breaks.push_back(0.5 * kPi + d);
+  for (int k = 1; k < kOuterUniformIntervals; ++k)
+    if (0.5 * kPi * k / kOuterUniformIntervals > below.back())
+      breaks.push_back(0.5 * kPi + 0.5 * kPi * k / kOuterUniformIntervals);
+  breaks.push_back(kPi);
+  return breaks;
+}
+
+// Inner breaks, graded toward v_max: the shadowing term G2 falls to 0 there
+// over a range of theta of order alpha, which the NDF variable compresses.
+std::vector<double> InnerBreaks(double vMax) {
+  std::vector<double> breaks{0.0};
+  for (double f : kInnerBreakFractions) breaks.push_back(f * vMax);
+  breaks.push_back(vMax);
+  return breaks;
+}
+
+// A and B together: they share every evaluation of D, G2 and the horizon.
+QuadratureResultN<2> IntegrateSplitSum(const Ndf &ndf, SmithForm smith, double mu_o,
+                                       double tolerance) {
   const double s_o = SafeSqrt((1.0 - mu_o) * (1.0 + mu_o));
   const double L_o = ndf.MuLambda(mu_o);
   const double innerTolerance = 0.1 * tolerance;
-  double worstInnerError = 0.0;
+  std::array<double, 2> worstInnerError{0.0, 0.0};
   bool innerConverged = true;
-  const auto outer = [&](double phi) {
+  int innerEvaluations = 0;
+  const auto outer = [&](double phi) -> std::array<double, 2> {
     const InnerSetup setup{s_o, mu_o, L_o, std::cos(phi)};
     const double thetaMax = 0.5 * (std::atan2(s_o * setup.cosPhi, mu_o) + 0.5 * kPi);
     double vMax;
@@ -66,23 +100,19 @@ QuadratureResult IntegrateChannel(const Ndf &ndf, SmithForm smith, double mu_o, 
       const double s = std::sin(thetaMax);
       vMax = s < kBeckmannSlopeCut * c ? s / c : kBeckmannSlopeCut;
     }
-    if (!(vMax > 0.0)) return 0.0;
-    const QuadratureResult inner =
-        IntegrateAdaptive([&](double v) { return InnerIntegrand(ndf, smith, setup, channel, v); },
-                          0.0, vMax, innerTolerance, 0.0, kInnerStartIntervals);
-    worstInnerError = std::max(worstInnerError, inner.error);
+    if (!(vMax > 0.0)) return {0.0, 0.0};
+    const QuadratureResultN<2> inner = IntegrateAdaptiveN<2>(
+        [&](double v) { return InnerIntegrand(ndf, smith, setup, v); }, InnerBreaks(vMax),
+        innerTolerance);
+    for (int c = 0; c < 2; ++c) worstInnerError[c] = std::max(worstInnerError[c], inner.error[c]);
     innerConverged = innerConverged && inner.converged;
-    return inner.value * kInvPi;
+    innerEvaluations += inner.evaluations;
+    return {inner.value[0] * kInvPi, inner.value[1] * kInvPi};
   };
-  const QuadratureResult left =
-      IntegrateAdaptive(outer, 0.0, 0.5 * kPi, 0.5 * tolerance, 0.0, kOuterStartIntervals);
-  const QuadratureResult right =
-      IntegrateAdaptive(outer, 0.5 * kPi, kPi, 0.5 * tolerance, 0.0, kOuterStartIntervals);
-  QuadratureResult total;
-  total.value = left.value + right.value;
-  total.error = left.error + right.error + worstInnerError;
-  total.evaluations = left.evaluations + right.evaluations;
-  total.converged = left.converged && right.converged && innerConverged;
+  QuadratureResultN<2> total = IntegrateAdaptiveN<2>(outer, OuterBreaks(mu_o), tolerance);
+  for (int c = 0; c < 2; ++c) total.error[c] += worstInnerError[c];
+  total.converged = total.converged && innerConverged;
+  total.evaluations = innerEvaluations;
   return total;
 }
 
@@ -100,17 +130,18 @@ ReferenceAlbedo IntegrateReferenceAlbedo(const Ndf &ndf, SmithForm smith, double
     result.converged = true;
     return result;
   }
-  // E is taken as A + B. Integrated on its own, E's adaptive refinement was
-  // seen to settle 1e-10 away from the truth at grazing view and small alpha
-  // (mu_o = 1e-3, alpha = 1e-4) while A and B, whose integrands split E's
-  // into a small and a large part, each agree with independent values to 1e-13.
-  const QuadratureResult a = IntegrateChannel(ndf, smith, mu_o, Channel::kA, tolerance);
-  const QuadratureResult b = IntegrateChannel(ndf, smith, mu_o, Channel::kB, tolerance);
-  result.A = a.value;
-  result.B = b.value;
-  result.E = a.value + b.value;
-  result.error = a.error + b.error;
-  result.converged = a.converged && b.converged;
+  // A and B are integrated together, E taken as A + B. Integrated on its
+  // own, E's adaptive refinement was seen to settle 1e-10 away from the truth
+  // at grazing view and small alpha (mu_o = 1e-3, alpha = 1e-4) while A and
+  // B, whose integrands split E's into a small and a large part, each agree
+  // with independent values to 1e-13.
+  const QuadratureResultN<2> ab = IntegrateSplitSum(ndf, smith, mu_o, tolerance);
+  result.A = ab.value[0];
+  result.B = ab.value[1];
+  result.E = ab.value[0] + ab.value[1];
+  result.error = ab.error[0] + ab.error[1];
+  result.evaluations = ab.evaluations;
+  result.converged = ab.converged;
   return result;
 }
 
@@ -127,6 +158,7 @@ ReferenceAverage IntegrateReferenceAlbedoAverage(const Ndf &ndf, SmithForm smith
   const auto integrand = [&](double mu) {
     const ReferenceAlbedo e = IntegrateReferenceAlbedo(ndf, smith, mu, 0.1 * tolerance);
     worstInner = std::max(worstInner, e.error);
+    result.evaluations += static_cast<uint64_t>(e.evaluations);
     innerConverged = innerConverged && e.converged;
     return 2.0 * mu * e.E;
   };

@@ -34,4 +34,16 @@ const std::string *Table::FindMetadata(const std::string &key) const {
   return nullptr;
 }
 
+Table ErrorMapOf(const Table &table) {
+  Table map = table;
+  map.values = table.errors;
+  map.errors.assign(table.errors.size(), 0.0);
+  for (auto &[key, value] : map.metadata)
+    if (key == "table") value = std::string(TableName(table.kind)) + ".err";
+  map.metadata.emplace_back("content", "per-texel error bound of " +
+                                           std::string(TableName(table.kind)) +
+                                           " (see errorBound); same layout and channels");
+  return map;
+}
+
 }  // namespace lutbake

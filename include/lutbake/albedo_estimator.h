@@ -14,6 +14,15 @@
 //   weight = G2 (o.h) / (mu_o cos(theta_h))   (computed with G2 / mu_o, finite at mu_o = 0)
 // In both, the light is the mirror direction i = 2 (o.h) h - o, and the
 // weight is 0 when i falls below the horizon.
+//
+// Sampling the light direction i itself (the naive baselines of
+// `lutbake report`), with f cos(theta_i) = D G2 / (4 mu_o):
+// uniform hemisphere, pdf 1 / (2 pi):
+//   weight = (pi / 2) D(h) G2 / mu_o
+// cosine-weighted, pdf mu_i / pi:
+//   weight = (pi / 4) D(h) (G2 / mu_o) / mu_i
+// Both are unbiased but their weights are unbounded where D peaks (small
+// alpha): they show what importance sampling buys.
 #pragma once
 
 #include <string_view>
@@ -23,7 +32,7 @@
 
 namespace lutbake {
 
-enum class SampleStrategy { kVisibleNormal, kNdf };
+enum class SampleStrategy { kVisibleNormal, kNdf, kCosine, kUniform };
 
 std::string_view ToString(SampleStrategy strategy);
 

@@ -15,18 +15,29 @@
 namespace lutbake {
 
 enum class Estimator {
-  kVisibleNormal,  // visible-normal sampling, scrambled Sobol points (default)
-  kNdf,            // plain NDF sampling, scrambled Sobol points
-  kQuadrature,     // deterministic nested Gauss-Kronrod (reference_integrator.h)
+  kVisibleNormal,        // visible-normal sampling, scrambled Sobol points (default)
+  kVisibleNormalRandom,  // visible-normal sampling, independent random points
+  kNdf,                  // NDF sampling, scrambled Sobol points
+  kCosine,               // cosine-weighted light directions, independent random points
+  kUniform,              // uniform hemisphere light directions, independent random points
+  kQuadrature,           // deterministic nested Gauss-Kronrod (reference_integrator.h)
 };
 
+inline constexpr Estimator kAllEstimators[] = {
+    Estimator::kUniform,    Estimator::kCosine,        Estimator::kNdf,
+    Estimator::kVisibleNormalRandom, Estimator::kVisibleNormal, Estimator::kQuadrature};
+
+// "vndf", "vndf-random", "ndf", "cosine", "uniform", "quadrature".
 std::string_view ToString(Estimator estimator);
+bool ParseEstimator(std::string_view name, Estimator *estimator);
 
 // Samples per texel of E and dfg by default: the smallest power of two at
 // which the default bake measured below 1e-4 at every checked texel against
 // the quadrature reference (README, "Accuracy of the default bake";
 // scripts/measure_default_error.sh reproduces it).
 inline constexpr uint64_t kDefaultSamples = 65536;
+// First round of a tolerance run: samples per texel before the first check.
+inline constexpr uint64_t kToleranceStartSamples = 1024;
 // E_avg integrates over mu as well (a 3D integral per texel); it gets as many
 // samples per texel as a whole 32-texel row of E.
 inline constexpr uint64_t kAverageSampleFactor = 32;
@@ -34,11 +45,31 @@ inline constexpr uint64_t kAverageSampleFactor = 32;
 // here, so K replicates of N/K points cost sqrt(K) in error against one
 // scramble of N points: K = 4 keeps that loss to 2x.
 inline constexpr int kDefaultReplicates = 4;
-// The error bound written into files: the two-sided 99% quantile of Student's
-// t with K - 1 = 3 degrees of freedom times the standard error, so that the
-// bound holds for 99% of texels even though the spread of only 4 replicate
-// means estimates the standard error.
-inline constexpr double kErrorSigmas = 5.841;
+// A tolerance run stops a texel as soon as its bound is below EPS, so the
+// bound must not be fooled by a replicate spread that is small by chance:
+// K = 8 (7 degrees of freedom) makes that rare.
+inline constexpr int kToleranceReplicates = 8;
+// In a tolerance run, a sampled texel whose bound predicts (error ~ 1/N, the
+// rate `lutbake report` measures for the sampled estimators) more than this
+// many samples to reach EPS is integrated by the quadrature instead, which
+// costs about as much as this many visible-normal samples at EPS = 1e-6
+// (10^4 evaluations of ~35 ns against ~100 ns per sample, measured on the
+// default tables).
+inline constexpr uint64_t kQuadratureSwitchSamples = 16384;
+// A sampled texel's bound adds kUnseenEventCount / N for events that none of
+// its N samples met (-ln 0.01: bake.cpp, SampleTexel, says why).
+inline constexpr double kUnseenEventCount = 4.605170185988091;
+// The quadrature's error estimate is the sum of |K15 - G7| over its
+// intervals plus the inner integrals' worst estimate. Against a reference at
+// 1e-14 over 2105 texels of a 128 x 128 GGX dfg table, the real error
+// exceeded that estimate on 2% of texels, by up to 3x (99.9% within 1.8x) at
+// tolerance 2.5e-6; at tolerance 1e-10 and below, the nested refinement left
+// errors up to 8e-11 with estimates of 2e-11. The bound a quadrature texel
+// reports is therefore kQuadratureErrorFactor x the estimate + the floor.
+inline constexpr double kQuadratureErrorFactor = 2.0;
+inline constexpr double kQuadratureErrorFloor = 1e-10;
+// Default tolerance of the quadrature outside tolerance runs.
+inline constexpr double kQuadratureDefaultTolerance = 1e-12;
 
 struct BakeSettings {
   NdfKind ndf = NdfKind::kGgx;
@@ -49,10 +80,27 @@ struct BakeSettings {
   int sizeEavg = 32;
   int sizeFavg = 32;
   int sizeDfg = 128;
+  // Fixed runs: samples per texel. Tolerance runs: the first round.
   uint64_t samples = kDefaultSamples;
   uint64_t seed = 0;
   int replicates = kDefaultReplicates;
+  // Tolerance run when > 0: every texel refined until its bound is <= this.
+  double tolerance = 0.0;
+  // Tolerance runs: may a texel switch to the quadrature (see above)? If
+  // not, sampling alone continues up to maxSamples.
+  bool allowQuadratureSwitch = true;
+  uint64_t maxSamples = uint64_t{1} << 26;
   std::string commandLine;  // recorded in the metadata
+};
+
+// What a bake spent and achieved, per table.
+struct BakeStats {
+  uint64_t samples = 0;           // sampled estimator: samples over all texels
+  uint64_t maxTexelSamples = 0;   // the most any texel used
+  uint64_t quadratureTexels = 0;  // texels integrated by the quadrature
+  uint64_t evaluations = 0;       // quadrature integrand evaluations
+  uint64_t unconverged = 0;       // texels whose bound is above the tolerance
+  double seconds = 0.0;
 };
 
 // Reports the fraction done in [0, 1]; called from worker threads, so it
@@ -64,9 +112,22 @@ Axis RoughnessAxis(int count);
 Axis MuAxis(int count);
 void FresnelAxes(FresnelModel model, int count, Axis *x, Axis *y);
 
-Table BakeTable(TableKind kind, const BakeSettings &settings, const ProgressFn &progress = {});
+Table BakeTable(TableKind kind, const BakeSettings &settings, const ProgressFn &progress = {},
+                BakeStats *stats = nullptr);
 
-// Samples per texel that BakeTable uses for a table (E_avg gets more).
+// The value of one texel-free point (mu_o, alpha) of E (channel 0) or of the
+// split sum (A, B), and its error bound, with the settings' estimator.
+struct PointValue {
+  double value[2] = {0, 0};
+  double error[2] = {0, 0};
+  uint64_t samples = 0;
+  uint64_t evaluations = 0;
+  bool quadrature = false;
+};
+PointValue EvaluateAlbedo(TableKind kind, const BakeSettings &settings, double mu_o, double alpha,
+                          uint64_t pointSeed);
+
+// Samples per texel that a fixed-sample bake uses for a table (E_avg gets more).
 uint64_t SamplesPerTexel(TableKind kind, const BakeSettings &settings);
 
 const char *LutbakeVersion();

@@ -17,6 +17,8 @@
 // split at phi = pi/2, where theta_max jumps when mu_o = 0.
 #pragma once
 
+#include <cstdint>
+
 #include "lutbake/ndf.h"
 #include "lutbake/smith.h"
 
@@ -24,7 +26,8 @@ namespace lutbake {
 
 struct ReferenceAlbedo {
   double E = 0, A = 0, B = 0;
-  double error = 0;  // sum of the quadrature error bounds of the three
+  double error = 0;  // error estimate of A plus that of B (so also a bound for E)
+  int evaluations = 0;  // integrand evaluations, A and B counted once
   bool converged = false;
 };
 
@@ -34,6 +37,7 @@ ReferenceAlbedo IntegrateReferenceAlbedo(const Ndf &ndf, SmithForm smith, double
 struct ReferenceAverage {
   double value = 0;
   double error = 0;
+  uint64_t evaluations = 0;
   bool converged = false;
 };
 

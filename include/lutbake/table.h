@@ -59,4 +59,8 @@ struct Table {
   const std::string *FindMetadata(const std::string &key) const;
 };
 
+// The error map of a table: a table of the same axes and channels whose
+// values are the per-texel error bounds (written as T.err.exr).
+Table ErrorMapOf(const Table &table);
+
 }  // namespace lutbake

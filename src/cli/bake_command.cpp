@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -87,6 +88,22 @@ CLI::Validator InRange(T lo, T hi, const std::string &what) {
       "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
 }
 
+// A real number in [lo, hi], given in decimal or exponent notation.
+CLI::Validator RealInRange(double lo, double hi, const std::string &accepted) {
+  return CLI::Validator(
+      [lo, hi, accepted](std::string &value) -> std::string {
+        char *end = nullptr;
+        errno = 0;
+        const double v = std::strtod(value.c_str(), &end);
+        if (value.empty() || end != value.c_str() + value.size() || errno == ERANGE ||
+            !std::isfinite(v))
+          return "'" + value + "' is not a number; accepted: " + accepted;
+        if (!(v >= lo && v <= hi)) return "'" + value + "' is out of range; accepted: " + accepted;
+        return {};
+      },
+      accepted);
+}
+
 CLI::Validator CppNamespace() {
   return CLI::Validator(
       [](std::string &value) -> std::string {
@@ -123,10 +140,16 @@ FresnelModel ParseFresnel(const std::string &s) {
   if (s == "conductor") return FresnelModel::kConductor;
   return FresnelModel::kSchlick;
 }
-Estimator ParseEstimator(const std::string &s) {
-  if (s == "ndf") return Estimator::kNdf;
-  if (s == "quadrature") return Estimator::kQuadrature;
-  return Estimator::kVisibleNormal;
+Estimator EstimatorNamed(const std::string &s) {
+  Estimator e = Estimator::kVisibleNormal;
+  ParseEstimator(s, &e);
+  return e;
+}
+
+std::vector<std::string> EstimatorNames() {
+  std::vector<std::string> names;
+  for (Estimator e : kAllEstimators) names.emplace_back(ToString(e));
+  return names;
 }
 TableKind ParseTable(const std::string &s) {
   for (TableKind k : kAllTables)
@@ -186,20 +209,42 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
       ->capture_default_str()
       ->check(OneOf({"schlick", "dielectric", "conductor"}));
   app.add_option("--estimator", o.estimator,
-                 "vndf: visible-normal sampling; ndf: NDF sampling; quadrature: deterministic "
-                 "Gauss-Kronrod (slow, ~1e-11)")
+                 "vndf: visible-normal sampling, scrambled Sobol points; vndf-random: the same "
+                 "with independent random points; ndf: NDF sampling; cosine, uniform: light "
+                 "directions cosine-weighted or uniform (baselines); quadrature: deterministic "
+                 "adaptive Gauss-Kronrod")
       ->capture_default_str()
-      ->check(OneOf({"vndf", "ndf", "quadrature"}));
+      ->check(OneOf(EstimatorNames()));
   app.add_option("--size", o.size,
                  "Texels per axis for every table (default: 32 for E, Eavg, Favg; 128 for dfg)")
       ->type_name("N")
       ->check(InRange(1, kMaxSize, "texels per axis"));
   app.add_option("--samples", o.samples,
                  "Samples per texel of E and dfg (Eavg: 32x as many); at least 2 so that the "
-                 "error can be estimated")
-      ->capture_default_str()
+                 "error can be estimated. Default 65536; with --tolerance, the first round "
+                 "(default 4096)")
       ->type_name("N")
       ->check(InRange<uint64_t>(2, kMaxSamples, "samples per texel"));
+  app.add_option("--replicates", o.replicates,
+                 "Independent scrambles per texel whose spread gives the error bound (default 4; "
+                 "8 with --tolerance)")
+      ->type_name("K")
+      ->check(InRange(2, 64, "replicates"));
+  app.add_option("--tolerance", o.tolerance,
+                 "Refine every texel of E, Eavg and dfg (in rounds that double the samples) until "
+                 "its error bound is at most EPS; texels where the quadrature is cheaper switch "
+                 "to it")
+      ->type_name("EPS")
+      ->check(RealInRange(1e-9, 0.1, "a number from 1e-9 to 0.1"));
+  app.add_flag("--sampling-only", o.samplingOnly,
+               "With --tolerance: never switch a texel to the quadrature; sampling continues "
+               "up to --max-samples");
+  app.add_option("--max-samples", o.maxSamples,
+                 "With --tolerance --sampling-only: most samples per texel (default 2^26)")
+      ->type_name("N")
+      ->check(InRange<uint64_t>(2, uint64_t{1} << 36, "samples per texel"));
+  app.add_flag("--error-map", o.errorMap,
+               "Also write T.err.exr: the per-texel error bound, same layout and channels as T");
   app.add_option("--seed", o.seed, "Seed of the point-set scrambling")
       ->capture_default_str()
       ->type_name("S")
@@ -225,11 +270,21 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
   settings.ndf = ParseNdf(o.ndf);
   settings.smith = ParseSmith(o.smith);
   settings.fresnel = ParseFresnel(o.fresnel);
-  settings.estimator = ParseEstimator(o.estimator);
+  settings.estimator = EstimatorNamed(o.estimator);
   if (o.size > 0)
     settings.sizeE = settings.sizeEavg = settings.sizeFavg = settings.sizeDfg = o.size;
-  settings.samples = o.samples;
+  const bool tolerance = o.tolerance > 0.0;
+  settings.tolerance = o.tolerance;
+  settings.samples = o.samples ? o.samples : tolerance ? kToleranceStartSamples : kDefaultSamples;
+  settings.replicates =
+      o.replicates ? o.replicates : tolerance ? kToleranceReplicates : kDefaultReplicates;
+  settings.allowQuadratureSwitch = !o.samplingOnly;
+  settings.maxSamples = o.maxSamples;
   settings.seed = o.seed;
+  if (!tolerance && (o.samplingOnly || o.maxSamples != (uint64_t{1} << 26))) {
+    std::cerr << "lutbake bake: --sampling-only and --max-samples apply only with --tolerance\n";
+    return 2;
+  }
   settings.commandLine = commandLine;
 
   std::vector<TableKind> tables;
@@ -254,46 +309,69 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
   summary["lutbakeVersion"] = LutbakeVersion();
   summary["out"] = o.outDir;
   summary["threads"] = threads;
+  if (tolerance) summary["tolerance"] = o.tolerance;
+  const auto bakeStart = std::chrono::steady_clock::now();
   summary["tables"] = nlohmann::ordered_json::array();
   try {
     AtomicOutputSet output;
     WriteOptions writeOptions;
     writeOptions.headerNamespace = o.headerNamespace;
+    std::vector<std::string> unreached;
     for (TableKind kind : tables) {
-      const auto start = std::chrono::steady_clock::now();
-      const Table table = BakeTable(kind, settings);
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      BakeStats stats;
+      const Table table = BakeTable(kind, settings, {}, &stats);
       nlohmann::ordered_json files = nlohmann::ordered_json::array();
+      const std::filesystem::path base = std::filesystem::path(o.outDir) / TableName(kind);
       for (const auto &writer : writers) {
-        const std::string path =
-            (std::filesystem::path(o.outDir) / (std::string(TableName(kind)) + writer->extension()))
-                .string();
+        const std::string path = base.string() + writer->extension();
         writer->Write(table, output.Add(path), writeOptions);
         files.push_back(path);
       }
-      const std::string *samples = table.FindMetadata("samplesPerTexel");
-      char line[256];
+      if (o.errorMap) {
+        const std::string path = base.string() + ".err.exr";
+        MakeExrWriter()->Write(ErrorMapOf(table), output.Add(path), writeOptions);
+        files.push_back(path);
+      }
+      const size_t texels = static_cast<size_t>(table.width()) * table.height();
+      const double meanSamples = static_cast<double>(stats.samples) / static_cast<double>(texels);
+      char line[320];
       std::snprintf(line, sizeof line,
-                    "%-5s %4d x %-4d %s samples/texel  %7.2f s  error max %.2e  rms %.2e\n",
-                    TableName(kind), table.width(), table.height(),
-                    samples ? samples->c_str() : "n/a", seconds, table.MaxError(),
-                    table.RmsError());
+                    "%-5s %4d x %-4d samples/texel mean %-9.4g max %-9llu quadrature texels %-6llu"
+                    " %7.2f s  error max %.2e  rms %.2e\n",
+                    TableName(kind), table.width(), table.height(), meanSamples,
+                    static_cast<unsigned long long>(stats.maxTexelSamples),
+                    static_cast<unsigned long long>(stats.quadratureTexels), stats.seconds,
+                    table.MaxError(), table.RmsError());
       std::cerr << line;
+      if (stats.unconverged > 0)
+        unreached.push_back(std::string(TableName(kind)) + " (" +
+                            std::to_string(stats.unconverged) + " texels)");
       nlohmann::ordered_json entry;
       entry["name"] = TableName(kind);
       entry["width"] = table.width();
       entry["height"] = table.height();
       entry["channels"] = table.channels;
-      entry["samplesPerTexel"] = samples && *samples != "n/a"
-                                     ? nlohmann::ordered_json(std::stoull(*samples))
-                                     : nlohmann::ordered_json();
       entry["estimator"] = *table.FindMetadata("estimator");
-      entry["seconds"] = seconds;
+      entry["samples"] = stats.samples;
+      entry["samplesPerTexelMean"] = meanSamples;
+      entry["samplesPerTexelMax"] = stats.maxTexelSamples;
+      entry["quadratureTexels"] = stats.quadratureTexels;
+      entry["quadratureEvaluations"] = stats.evaluations;
+      entry["seconds"] = stats.seconds;
       entry["errorMax"] = table.MaxError();
       entry["errorRms"] = table.RmsError();
       entry["files"] = files;
       summary["tables"].push_back(entry);
+    }
+    if (!unreached.empty()) {
+      std::cerr << "lutbake bake: --tolerance " << o.tolerance << " not reached within "
+                << "--max-samples " << o.maxSamples << " in " << JoinNames(unreached)
+                << "; nothing written. Raise --max-samples or drop --sampling-only.\n";
+      if (created) {
+        std::error_code ec;
+        std::filesystem::remove(o.outDir, ec);
+      }
+      return 1;
     }
     output.Commit();
   } catch (const IoError &e) {
@@ -306,6 +384,18 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
   } catch (const std::bad_alloc &) {
     std::cerr << "lutbake bake: out of memory\n";
     return 1;
+  }
+  const double totalSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - bakeStart).count();
+  summary["seconds"] = totalSeconds;
+  if (tolerance) {
+    double worst = 0.0;
+    for (const auto &t : summary["tables"]) worst = std::max(worst, t["errorMax"].get<double>());
+    char line[160];
+    std::snprintf(line, sizeof line,
+                  "tolerance %.3g reached on every texel: max bound %.2e, %.2f s in all\n",
+                  o.tolerance, worst, totalSeconds);
+    std::cerr << line;
   }
   if (o.json) std::cout << summary.dump(2) << "\n";
   return 0;

@@ -17,8 +17,13 @@ struct BakeOptions {
   std::string fresnel = "schlick";
   std::string estimator = "vndf";
   int size = 0;  // 0: the per-table defaults
-  uint64_t samples = kDefaultSamples;
+  uint64_t samples = 0;  // 0: kDefaultSamples, or kToleranceStartSamples with --tolerance
   uint64_t seed = 0;
+  int replicates = 0;    // 0: kDefaultReplicates, or kToleranceReplicates with --tolerance
+  double tolerance = 0;  // 0: a fixed-sample bake
+  bool samplingOnly = false;
+  uint64_t maxSamples = uint64_t{1} << 26;
+  bool errorMap = false;
   int threads = 0;  // 0: all cores
   std::string formats = "exr,bin,header";
   std::string headerNamespace = "lutbake_luts";
