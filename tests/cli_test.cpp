@@ -6,6 +6,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <OpenImageIO/imageio.h>
+
 #include <fstream>
 
 namespace {
@@ -51,6 +53,12 @@ TEST(Cli, BadInputIsRefusedWithUsageStatusAndNoOutput) {
                                                    {"--format exr,png", "png"},
                                                    {"--threads 0", "--threads"},
                                                    {"--namespace 9bad", "namespace"},
+                                                   {"--tolerance 0", "1e-9 to 0.1"},
+                                                   {"--tolerance abc", "not a number"},
+                                                   {"--tolerance nan", "not a number"},
+                                                   {"--estimator magic", "vndf-random"},
+                                                   {"--replicates 1", "--replicates"},
+                                                   {"--sampling-only", "--tolerance"},
                                                    {"--frobnicate", "frobnicate"}}) {
     const CommandResult r = Lutbake("bake --out " + out.string() + " " + bad.args);
     EXPECT_EQ(r.status, 2) << bad.args << ": " << r.output;
@@ -127,6 +135,64 @@ TEST(Cli, JsonSummary) {
   EXPECT_NE(r.output.find("\"errorMax\""), std::string::npos);
   EXPECT_TRUE(fs::exists(out / "E.bin"));
   EXPECT_FALSE(fs::exists(out / "E.exr"));
+  fs::remove_all(out);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Cli, ErrorMapHasTheTableLayoutAndItsBounds) {
+  const fs::path out = Scratch("errmap");
+  const CommandResult r =
+      Lutbake("bake --out " + out.string() + " --tables dfg --size 4 --samples 64 --error-map "
+              "--format exr");
+  ASSERT_EQ(r.status, 0) << r.output;
+  auto image = OIIO::ImageInput::open((out / "dfg.err.exr").string());
+  ASSERT_TRUE(image);
+  const OIIO::ImageSpec &spec = image->spec();
+  EXPECT_EQ(spec.width, 4);
+  EXPECT_EQ(spec.height, 4);
+  EXPECT_EQ(spec.nchannels, 2);
+  std::vector<float> errors(32);
+  ASSERT_TRUE(image->read_image(0, 0, 0, 2, OIIO::TypeDesc::FLOAT, errors.data()));
+  // Each texel's bound is at least the unseen-event term 4.6 / 64 and positive.
+  for (float e : errors) EXPECT_GE(e, 4.6f / 64.0f);
+  EXPECT_NE(spec.get_string_attribute("content").find("error bound"), std::string::npos);
+  fs::remove_all(out);
+}
+
+TEST(Cli, ToleranceRunReportsWhatItReached) {
+  const fs::path out = Scratch("tol");
+  const CommandResult r = Lutbake("bake --out " + out.string() +
+                                  " --tables E --size 4 --tolerance 1e-5 --json --format bin");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("tolerance 1e-05 reached on every texel"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("\"quadratureTexels\": 16"), std::string::npos) << r.output;
+  fs::remove_all(out);
+  // Sampling alone, capped below what 1e-5 needs: refused, nothing written.
+  const CommandResult capped =
+      Lutbake("bake --out " + out.string() +
+              " --tables E --size 2 --tolerance 1e-5 --sampling-only --max-samples 1024");
+  EXPECT_EQ(capped.status, 1) << capped.output;
+  EXPECT_NE(capped.output.find("--max-samples"), std::string::npos) << capped.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Cli, ReportWritesCsvMarkdownAndSvg) {
+  const fs::path out = Scratch("report");
+  const CommandResult r = Lutbake("report --out " + out.string() +
+                                  " --tables E --estimators vndf,quadrature --size 4 --budget 1");
+  ASSERT_EQ(r.status, 0) << r.output;
+  for (const char *name : {"report.csv", "report.md", "report.svg"})
+    EXPECT_GT(fs::file_size(out / name), 100u) << name;
+  std::ifstream csv(out / "report.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("table,estimator,samples_per_texel", 0), 0u) << header;
+  const CommandResult bad = Lutbake("report --out " + out.string() + " --tables Favg");
+  EXPECT_EQ(bad.status, 2) << bad.output;
   fs::remove_all(out);
 }
 

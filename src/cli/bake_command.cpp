@@ -12,6 +12,7 @@
 #include <sstream>
 #include <thread>
 
+#include "cli_util.h"
 #include "lutbake/atomic_output.h"
 #include "lutbake/writer.h"
 
@@ -23,111 +24,7 @@ constexpr int kMaxSize = 4096;
 constexpr uint64_t kMaxSamples = uint64_t{1} << 30;
 constexpr int kMaxThreads = 1024;
 
-std::vector<std::string> SplitList(const std::string &list) {
-  std::vector<std::string> items;
-  std::stringstream stream(list);
-  for (std::string item; std::getline(stream, item, ',');) items.push_back(item);
-  if (!list.empty() && list.back() == ',') items.emplace_back();
-  return items;
-}
-
-std::string JoinNames(const std::vector<std::string> &names) {
-  std::string s;
-  for (size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + names[i];
-  return s;
-}
-
-// A validator that accepts one of `names` and says which ones when it fails.
-CLI::Validator OneOf(std::vector<std::string> names) {
-  const std::string accepted = JoinNames(names);
-  return CLI::Validator(
-      [names, accepted](std::string &value) -> std::string {
-        for (const std::string &n : names)
-          if (value == n) return {};
-        return "'" + value + "' is not accepted; accepted: " + accepted;
-      },
-      "one of: " + accepted);
-}
-
-// A comma-separated list of items from `names`, none repeated.
-CLI::Validator ListOf(std::vector<std::string> names) {
-  const std::string accepted = JoinNames(names);
-  return CLI::Validator(
-      [names, accepted](std::string &value) -> std::string {
-        const std::vector<std::string> items = SplitList(value);
-        if (items.empty()) return "empty list; accepted: a comma-separated subset of " + accepted;
-        for (size_t i = 0; i < items.size(); ++i) {
-          bool known = false;
-          for (const std::string &n : names) known = known || items[i] == n;
-          if (!known)
-            return "'" + value + "' names '" + items[i] +
-                   "', which is not accepted; accepted: a comma-separated subset of " + accepted;
-          for (size_t j = 0; j < i; ++j)
-            if (items[j] == items[i]) return "'" + value + "' names '" + items[i] + "' twice";
-        }
-        return {};
-      },
-      "comma-separated subset of: " + accepted);
-}
-
-template <typename T>
-CLI::Validator InRange(T lo, T hi, const std::string &what) {
-  const std::string accepted = std::to_string(lo) + " to " + std::to_string(hi) + " " + what;
-  return CLI::Validator(
-      [lo, hi, accepted](std::string &value) -> std::string {
-        // Reject signs, spaces and trailing text before converting.
-        if (value.empty() || value.find_first_not_of("0123456789") != std::string::npos)
-          return "'" + value + "' is not a whole number; accepted: " + accepted;
-        errno = 0;
-        const unsigned long long v = std::strtoull(value.c_str(), nullptr, 10);
-        if (errno == ERANGE || v < static_cast<unsigned long long>(lo) ||
-            v > static_cast<unsigned long long>(hi))
-          return "'" + value + "' is out of range; accepted: " + accepted;
-        return {};
-      },
-      "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-}
-
-// A real number in [lo, hi], given in decimal or exponent notation.
-CLI::Validator RealInRange(double lo, double hi, const std::string &accepted) {
-  return CLI::Validator(
-      [lo, hi, accepted](std::string &value) -> std::string {
-        char *end = nullptr;
-        errno = 0;
-        const double v = std::strtod(value.c_str(), &end);
-        if (value.empty() || end != value.c_str() + value.size() || errno == ERANGE ||
-            !std::isfinite(v))
-          return "'" + value + "' is not a number; accepted: " + accepted;
-        if (!(v >= lo && v <= hi)) return "'" + value + "' is out of range; accepted: " + accepted;
-        return {};
-      },
-      accepted);
-}
-
-CLI::Validator CppNamespace() {
-  return CLI::Validator(
-      [](std::string &value) -> std::string {
-        // A C++ namespace path: identifiers separated by "::".
-        bool ok = !value.empty();
-        bool start = true;
-        for (size_t i = 0; ok && i < value.size(); ++i) {
-          const char c = value[i];
-          if (c == ':' && i + 1 < value.size() && value[i + 1] == ':' && !start) {
-            ++i;
-            start = true;
-            continue;
-          }
-          const bool alpha = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
-          const bool digit = c >= '0' && c <= '9';
-          ok = alpha || (digit && !start);
-          start = false;
-        }
-        if (!ok || start)
-          return "'" + value + "' is not a C++ namespace name (e.g. my_engine::luts)";
-        return {};
-      },
-      "C++ namespace");
-}
+}  // namespace
 
 NdfKind ParseNdf(const std::string &s) {
   return s == "beckmann" ? NdfKind::kBeckmann : NdfKind::kGgx;
@@ -157,36 +54,7 @@ TableKind ParseTable(const std::string &s) {
   return TableKind::kE;
 }
 
-// Checks that `dir` is (or can become) a writable directory, creating it if
-// missing. Returns an empty string on success, else the reason; sets
-// *usageError when the problem is the value itself (a file, not a directory).
-std::string PrepareOutputDirectory(const std::string &dir, bool *created, bool *usageError) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  *created = false;
-  *usageError = false;
-  if (fs::exists(dir, ec)) {
-    if (!fs::is_directory(dir, ec)) {
-      *usageError = true;
-      return "exists and is not a directory; accepted: a directory, created if missing";
-    }
-  } else {
-    *created = fs::create_directories(dir, ec);
-    if (ec) return "cannot create the directory: " + ec.message();
-  }
-  // Probe by writing, which also catches read-only file systems.
-  const std::string probe =
-      (fs::path(dir) / (".lutbake-probe-" + std::to_string(::getpid()))).string();
-  std::FILE *f = std::fopen(probe.c_str(), "wb");
-  if (!f) {
-    const std::string reason = std::strerror(errno);
-    if (*created) fs::remove(dir, ec);
-    return "is not writable: " + reason;
-  }
-  std::fclose(f);
-  std::remove(probe.c_str());
-  return {};
-}
+namespace {
 
 }  // namespace
 
@@ -367,6 +235,7 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
       std::cerr << "lutbake bake: --tolerance " << o.tolerance << " not reached within "
                 << "--max-samples " << o.maxSamples << " in " << JoinNames(unreached)
                 << "; nothing written. Raise --max-samples or drop --sampling-only.\n";
+      output.Discard();  // removes the temporaries, so that the directory is empty again
       if (created) {
         std::error_code ec;
         std::filesystem::remove(o.outDir, ec);

@@ -30,6 +30,14 @@ struct BakeOptions {
   bool json = false;
 };
 
+// Option values (already validated) to library enums; shared with report.
+NdfKind ParseNdf(const std::string &name);
+SmithForm ParseSmith(const std::string &name);
+FresnelModel ParseFresnel(const std::string &name);
+TableKind ParseTable(const std::string &name);
+Estimator EstimatorNamed(const std::string &name);
+std::vector<std::string> EstimatorNames();
+
 void SetupBakeCommand(CLI::App &app, BakeOptions &options);
 
 // Returns the process exit status: 0 success, 1 runtime failure (cannot

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "bake_command.h"
+#include "report_command.h"
 #include "lutbake/bake.h"
 
 namespace {
@@ -25,11 +26,16 @@ int main(int argc, char **argv) {
   app.require_subcommand(1);
   app.footer(
       "Example:\n  lutbake bake --out out          # the four default tables\n"
-      "Run 'lutbake bake --help' for every option of bake.");
+      "  lutbake report --out report    # error against time of every estimator\n"
+      "Run 'lutbake bake --help' or 'lutbake report --help' for their options.");
   lutbake::cli::BakeOptions bakeOptions;
   CLI::App *bake =
       app.add_subcommand("bake", "Bake tables into a directory (EXR, .bin, C++ header)");
   lutbake::cli::SetupBakeCommand(*bake, bakeOptions);
+  lutbake::cli::ReportOptions reportOptions;
+  CLI::App *report = app.add_subcommand(
+      "report", "Measure real error against run time for every estimator (csv, md, svg)");
+  lutbake::cli::SetupReportCommand(*report, reportOptions);
 
   std::string commandLine = "lutbake";
   for (int i = 1; i < argc; ++i) commandLine += " " + QuoteArgument(argv[i]);
@@ -49,6 +55,7 @@ int main(int argc, char **argv) {
   }
   try {
     if (bake->parsed()) return lutbake::cli::RunBake(bakeOptions, commandLine);
+    if (report->parsed()) return lutbake::cli::RunReport(reportOptions);
   } catch (const std::exception &e) {
     std::cerr << "lutbake: " << e.what() << "\n";
     return 1;

@@ -1,0 +1,126 @@
+#include "cli_util.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+
+namespace lutbake::cli {
+
+std::vector<std::string> SplitList(const std::string &list) {
+  std::vector<std::string> items;
+  std::stringstream stream(list);
+  for (std::string item; std::getline(stream, item, ',');) items.push_back(item);
+  if (!list.empty() && list.back() == ',') items.emplace_back();
+  return items;
+}
+
+std::string JoinNames(const std::vector<std::string> &names) {
+  std::string s;
+  for (size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + names[i];
+  return s;
+}
+
+CLI::Validator OneOf(std::vector<std::string> names) {
+  const std::string accepted = JoinNames(names);
+  return CLI::Validator(
+      [names, accepted](std::string &value) -> std::string {
+        for (const std::string &n : names)
+          if (value == n) return {};
+        return "'" + value + "' is not accepted; accepted: " + accepted;
+      },
+      "one of: " + accepted);
+}
+
+CLI::Validator ListOf(std::vector<std::string> names) {
+  const std::string accepted = JoinNames(names);
+  return CLI::Validator(
+      [names, accepted](std::string &value) -> std::string {
+        const std::vector<std::string> items = SplitList(value);
+        if (items.empty()) return "empty list; accepted: a comma-separated subset of " + accepted;
+        for (size_t i = 0; i < items.size(); ++i) {
+          bool known = false;
+          for (const std::string &n : names) known = known || items[i] == n;
+          if (!known)
+            return "'" + value + "' names '" + items[i] +
+                   "', which is not accepted; accepted: a comma-separated subset of " + accepted;
+          for (size_t j = 0; j < i; ++j)
+            if (items[j] == items[i]) return "'" + value + "' names '" + items[i] + "' twice";
+        }
+        return {};
+      },
+      "comma-separated subset of: " + accepted);
+}
+
+CLI::Validator RealInRange(double lo, double hi, const std::string &accepted) {
+  return CLI::Validator(
+      [lo, hi, accepted](std::string &value) -> std::string {
+        char *end = nullptr;
+        errno = 0;
+        const double v = std::strtod(value.c_str(), &end);
+        if (value.empty() || end != value.c_str() + value.size() || errno == ERANGE ||
+            !std::isfinite(v))
+          return "'" + value + "' is not a number; accepted: " + accepted;
+        if (!(v >= lo && v <= hi)) return "'" + value + "' is out of range; accepted: " + accepted;
+        return {};
+      },
+      accepted);
+}
+
+CLI::Validator CppNamespace() {
+  return CLI::Validator(
+      [](std::string &value) -> std::string {
+        // A C++ namespace path: identifiers separated by "::".
+        bool ok = !value.empty();
+        bool start = true;
+        for (size_t i = 0; ok && i < value.size(); ++i) {
+          const char c = value[i];
+          if (c == ':' && i + 1 < value.size() && value[i + 1] == ':' && !start) {
+            ++i;
+            start = true;
+            continue;
+          }
+          const bool alpha = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+          const bool digit = c >= '0' && c <= '9';
+          ok = alpha || (digit && !start);
+          start = false;
+        }
+        if (!ok || start)
+          return "'" + value + "' is not a C++ namespace name (e.g. my_engine::luts)";
+        return {};
+      },
+      "C++ namespace");
+}
+
+std::string PrepareOutputDirectory(const std::string &dir, bool *created, bool *usageError) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  *created = false;
+  *usageError = false;
+  if (fs::exists(dir, ec)) {
+    if (!fs::is_directory(dir, ec)) {
+      *usageError = true;
+      return "exists and is not a directory; accepted: a directory, created if missing";
+    }
+  } else {
+    *created = fs::create_directories(dir, ec);
+    if (ec) return "cannot create the directory: " + ec.message();
+  }
+  // Probe by writing, which also catches read-only file systems.
+  const std::string probe =
+      (fs::path(dir) / (".lutbake-probe-" + std::to_string(::getpid()))).string();
+  std::FILE *f = std::fopen(probe.c_str(), "wb");
+  if (!f) {
+    const std::string reason = std::strerror(errno);
+    if (*created) fs::remove(dir, ec);
+    return "is not writable: " + reason;
+  }
+  std::fclose(f);
+  std::remove(probe.c_str());
+  return {};
+}
+
+}  // namespace lutbake::cli

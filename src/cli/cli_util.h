@@ -1,0 +1,48 @@
+// Helpers shared by the subcommands: list parsing, validators whose
+// messages name the value and what is accepted, and output-directory checks.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace lutbake::cli {
+
+std::vector<std::string> SplitList(const std::string &list);
+std::string JoinNames(const std::vector<std::string> &names);
+
+// A validator that accepts one of `names` and says which ones when it fails.
+CLI::Validator OneOf(std::vector<std::string> names);
+// A comma-separated list of items from `names`, none repeated.
+CLI::Validator ListOf(std::vector<std::string> names);
+// A real number in [lo, hi], given in decimal or exponent notation.
+CLI::Validator RealInRange(double lo, double hi, const std::string &accepted);
+CLI::Validator CppNamespace();
+
+template <typename T>
+CLI::Validator InRange(T lo, T hi, const std::string &what) {
+  const std::string accepted = std::to_string(lo) + " to " + std::to_string(hi) + " " + what;
+  return CLI::Validator(
+      [lo, hi, accepted](std::string &value) -> std::string {
+        // Reject signs, spaces and trailing text before converting.
+        if (value.empty() || value.find_first_not_of("0123456789") != std::string::npos)
+          return "'" + value + "' is not a whole number; accepted: " + accepted;
+        errno = 0;
+        const unsigned long long v = std::strtoull(value.c_str(), nullptr, 10);
+        if (errno == ERANGE || v < static_cast<unsigned long long>(lo) ||
+            v > static_cast<unsigned long long>(hi))
+          return "'" + value + "' is out of range; accepted: " + accepted;
+        return {};
+      },
+      "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+}
+
+
+// Checks that `dir` is (or can become) a writable directory, creating it if
+// missing. Returns an empty string on success, else the reason; sets
+// *usageError when the problem is the value itself (a file, not a directory).
+std::string PrepareOutputDirectory(const std::string &dir, bool *created, bool *usageError);
+
+}  // namespace lutbake::cli

@@ -1,0 +1,120 @@
+#include "report_command.h"
+
+#include <tbb/global_control.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <thread>
+
+#include "bake_command.h"
+#include "cli_util.h"
+#include "lutbake/atomic_output.h"
+#include "lutbake/report.h"
+#include "lutbake/writer.h"
+
+namespace lutbake::cli {
+
+namespace {
+
+void WriteText(AtomicOutputSet &output, const std::string &path, const std::string &text) {
+  const std::string temporary = output.Add(path);
+  std::ofstream file(temporary, std::ios::binary);
+  file << text;
+  file.close();
+  if (!file) throw IoError("cannot write " + path);
+}
+
+}  // namespace
+
+void SetupReportCommand(CLI::App &app, ReportOptions &o) {
+  app.add_option("--out", o.outDir, "Output directory for report.csv, report.md, report.svg")
+      ->required()
+      ->type_name("DIR");
+  app.add_option("--tables", o.tables,
+                 "Tables to measure (Favg has no sampled estimator: it is always quadrature)")
+      ->capture_default_str()
+      ->check(ListOf({"E", "Eavg", "dfg"}));
+  app.add_option("--estimators", o.estimators, "Estimators to compare")
+      ->capture_default_str()
+      ->check(ListOf(EstimatorNames()));
+  app.add_option("--budget", o.budget,
+                 "Seconds in total (split evenly over table x estimator); each estimator doubles "
+                 "its samples from 4 while its share lasts")
+      ->capture_default_str()
+      ->type_name("SECONDS")
+      ->check(RealInRange(0.01, 86400, "seconds from 0.01 to 86400"));
+  app.add_option("--size", o.size, "Texels per axis of every measured table")
+      ->capture_default_str()
+      ->type_name("N")
+      ->check(InRange(1, 256, "texels per axis"));
+  app.add_option("--ndf", o.ndf, "Microfacet distribution")
+      ->capture_default_str()
+      ->check(OneOf({"ggx", "beckmann"}));
+  app.add_option("--smith", o.smith, "Smith masking-shadowing form")
+      ->capture_default_str()
+      ->check(OneOf({"correlated", "separable"}));
+  app.add_option("--seed", o.seed, "Seed of the point sets")
+      ->capture_default_str()
+      ->type_name("S")
+      ->check(InRange<uint64_t>(0, UINT64_MAX, "(any unsigned 64-bit integer)"));
+  app.add_option("--threads", o.threads, "Worker threads (default: all cores)")
+      ->type_name("N")
+      ->check(InRange(1, 1024, "threads"));
+  app.footer("Example:\n  lutbake report --out report --budget 60");
+}
+
+int RunReport(const ReportOptions &o) {
+  ReportSettings settings;
+  settings.tables.clear();
+  for (const std::string &name : SplitList(o.tables)) settings.tables.push_back(ParseTable(name));
+  settings.estimators.clear();
+  for (const std::string &name : SplitList(o.estimators))
+    settings.estimators.push_back(EstimatorNamed(name));
+  settings.ndf = ParseNdf(o.ndf);
+  settings.smith = ParseSmith(o.smith);
+  settings.size = o.size;
+  settings.budgetSeconds = o.budget;
+  settings.seed = o.seed;
+
+  bool created = false, usageError = false;
+  const std::string problem = PrepareOutputDirectory(o.outDir, &created, &usageError);
+  if (!problem.empty()) {
+    std::cerr << "lutbake report: --out " << o.outDir << ": " << problem << "\n";
+    return usageError ? 2 : 1;
+  }
+  const int threads = o.threads > 0
+                          ? o.threads
+                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
+                                  static_cast<size_t>(threads));
+  // A progress line, rewritten in place, only when stderr is a terminal.
+  ReportProgressFn progress;
+  if (::isatty(STDERR_FILENO))
+    progress = [](const std::string &line) { std::cerr << "\r\033[K" << line << std::flush; };
+  const std::vector<ReportRow> rows = RunReport(settings, progress);
+  if (progress) std::cerr << "\r\033[K";
+  namespace fs = std::filesystem;
+  try {
+    AtomicOutputSet output;
+    WriteText(output, (fs::path(o.outDir) / "report.csv").string(), ReportCsv(rows));
+    WriteText(output, (fs::path(o.outDir) / "report.md").string(),
+              ReportMarkdown(settings, rows));
+    WriteText(output, (fs::path(o.outDir) / "report.svg").string(), ReportSvg(settings, rows));
+    output.Commit();
+  } catch (const IoError &e) {
+    std::cerr << "lutbake report: " << e.what() << "\n";
+    if (created) {
+      std::error_code ec;
+      fs::remove(o.outDir, ec);
+    }
+    return 1;
+  }
+  std::cerr << "lutbake report: " << rows.size() << " runs; wrote report.csv, report.md, "
+            << "report.svg in " << o.outDir << "\n";
+  return 0;
+}
+
+}  // namespace lutbake::cli
