@@ -127,8 +127,7 @@ TexelResult QuadratureAverage(const BakeSettings &s, const Ndf &ndf) {
   const ReferenceAverage r = IntegrateReferenceAlbedoAverage(ndf, s.smith, tolerance);
   TexelResult out;
   out.value[0] = r.value;
-  out.error[0] =
-      ndf.alpha == 0.0 ? 0.0 : kQuadratureErrorFactor * r.error + kQuadratureErrorFloor;
+  out.error[0] = ndf.alpha == 0.0 ? 0.0 : kQuadratureErrorFactor * r.error + kQuadratureErrorFloor;
   out.evaluations = r.evaluations;
   out.quadrature = true;
   return out;
@@ -160,7 +159,8 @@ bool SampleTexel(const BakeSettings &s, const SampleFn &sample, uint64_t samples
     out->samples = acc.samples();
   };
   if (s.tolerance <= 0.0) {
-    const int k = static_cast<int>(std::max<uint64_t>(1, std::min<uint64_t>(s.replicates, samples)));
+    const int k =
+        static_cast<int>(std::max<uint64_t>(1, std::min<uint64_t>(s.replicates, samples)));
     ReplicatedAccumulator<Dims, Channels> acc(k, texelSeed, points);
     for (int r = 0; r < k; ++r)
       acc.ExtendReplicate(sample, r,
@@ -348,9 +348,10 @@ Table BakeTable(TableKind kind, const BakeSettings &s, const ProgressFn &progres
   const bool albedo = kind != TableKind::kFavg;
   const bool sampled = albedo && s.estimator != Estimator::kQuadrature;
   const bool tolerance = sampled && s.tolerance > 0.0;
-  const int replicates = tolerance ? std::clamp(s.replicates, 1, 64)
-                                   : static_cast<int>(std::min<uint64_t>(
-                                         s.replicates, std::max<uint64_t>(1, SamplesPerTexel(kind, s))));
+  const int replicates = tolerance
+                             ? std::clamp(s.replicates, 1, 64)
+                             : static_cast<int>(std::min<uint64_t>(
+                                   s.replicates, std::max<uint64_t>(1, SamplesPerTexel(kind, s))));
   const bool random = PointSetOf(s.estimator) == PointSet::kIndependentRandom;
   auto &m = table.metadata;
   m.emplace_back("table", TableName(kind));
@@ -367,8 +368,9 @@ Table BakeTable(TableKind kind, const BakeSettings &s, const ProgressFn &progres
                                                           : "Y = " + std::string(TableName(kind)));
   std::string estimatorText = "adaptive Gauss-Kronrod quadrature";
   if (sampled)
-    estimatorText = std::string(ToString(s.estimator)) +
-                    (random ? " with independent random points" : " with Owen-scrambled Sobol points");
+    estimatorText =
+        std::string(ToString(s.estimator)) +
+        (random ? " with independent random points" : " with Owen-scrambled Sobol points");
   if (tolerance && s.allowQuadratureSwitch)
     estimatorText += "; texels for which the quadrature is cheaper switch to it";
   m.emplace_back("estimator", estimatorText);
@@ -385,10 +387,11 @@ Table BakeTable(TableKind kind, const BakeSettings &s, const ProgressFn &progres
   char bound[256];
   std::snprintf(bound, sizeof bound,
                 "sampled texels: %.3f standard errors (Student t, %d dof, two-sided 99%%) from the "
-                "spread of %d independent %s, plus 4.6 / N for events no sample met; quadrature texels: 2 x the Gauss-Kronrod estimate + %.0e",
+                "spread of %d independent %s, plus 4.6 / N for events no sample met; quadrature "
+                "texels: 2 x the Gauss-Kronrod estimate + %.0e",
                 StudentT99(replicates - 1), replicates - 1, replicates,
                 random ? "random point sets" : "scrambles", kQuadratureErrorFloor);
-  m.emplace_back("errorBound", !albedo ? "Gauss-Kronrod error estimate"
+  m.emplace_back("errorBound", !albedo   ? "Gauss-Kronrod error estimate"
                                : sampled ? bound
                                          : "2 x the Gauss-Kronrod estimate + 1e-10");
   m.emplace_back("errorMax", FormatDouble(table.MaxError()));

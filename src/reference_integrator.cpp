@@ -44,8 +44,8 @@ std::array<double, 2> InnerIntegrand(const Ndf &ndf, SmithForm smith, const Inne
   const double mu_i = 2.0 * oh * cosTheta - s.c_o;
   if (mu_i <= 0.0 || oh <= 0.0 || cosTheta <= 0.0) return {0.0, 0.0};
   // (o.h) / cos(theta) * G2 / mu_o, the integrand in xi.
-  const double w = jacobian * (oh / cosTheta) *
-                   SmithG2OverMuO(smith, s.c_o, mu_i, s.L_o, ndf.MuLambda(mu_i));
+  const double w =
+      jacobian * (oh / cosTheta) * SmithG2OverMuO(smith, s.c_o, mu_i, s.L_o, ndf.MuLambda(mu_i));
   const double fc = Pow5(1.0 - oh);
   return {w * (1.0 - fc), w * fc};
 }
@@ -101,9 +101,9 @@ QuadratureResultN<2> IntegrateSplitSum(const Ndf &ndf, SmithForm smith, double m
       vMax = s < kBeckmannSlopeCut * c ? s / c : kBeckmannSlopeCut;
     }
     if (!(vMax > 0.0)) return {0.0, 0.0};
-    const QuadratureResultN<2> inner = IntegrateAdaptiveN<2>(
-        [&](double v) { return InnerIntegrand(ndf, smith, setup, v); }, InnerBreaks(vMax),
-        innerTolerance);
+    const QuadratureResultN<2> inner =
+        IntegrateAdaptiveN<2>([&](double v) { return InnerIntegrand(ndf, smith, setup, v); },
+                              InnerBreaks(vMax), innerTolerance);
     for (int c = 0; c < 2; ++c) worstInnerError[c] = std::max(worstInnerError[c], inner.error[c]);
     innerConverged = innerConverged && inner.converged;
     innerEvaluations += inner.evaluations;

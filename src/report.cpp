@@ -96,8 +96,8 @@ std::string Format(const char *format, double v) {
 
 std::vector<ReportRow> RunReport(const ReportSettings &s, const ReportProgressFn &progress) {
   std::vector<ReportRow> rows;
-  const double share =
-      s.budgetSeconds / static_cast<double>(std::max<size_t>(1, s.tables.size() * s.estimators.size()));
+  const double share = s.budgetSeconds / static_cast<double>(std::max<size_t>(
+                                             1, s.tables.size() * s.estimators.size()));
   for (TableKind kind : s.tables) {
     if (progress) progress(std::string("reference values of ") + TableName(kind));
     // The layout (axes) of the report table, as BakeTable makes it.
@@ -187,8 +187,9 @@ std::string ReportMarkdown(const ReportSettings &s, const std::vector<ReportRow>
           best = r.maxError;
           bestTime = r.seconds;
         }
-      out << " | " << (std::isfinite(best) ? Format("%.2e", best) + Format(" (%.3g s)", bestTime)
-                                           : std::string("none"))
+      out << " | "
+          << (std::isfinite(best) ? Format("%.2e", best) + Format(" (%.3g s)", bestTime)
+                                  : std::string("none"))
           << " |\n";
     }
     out << "\n\"not reached\": not within this report's budget.\n\n### All runs\n\n"
@@ -233,8 +234,10 @@ std::string ReportSvg(const ReportSettings &s, const std::vector<ReportRow> &row
         eMax = std::max(eMax, std::max(r.maxError, 1e-10));
       }
     if (!(tMax > 0)) continue;
-    const double lt0 = std::floor(std::log10(tMin)), lt1 = std::max(lt0 + 1, std::ceil(std::log10(tMax)));
-    const double le0 = std::floor(std::log10(eMin)), le1 = std::max(le0 + 1, std::ceil(std::log10(eMax)));
+    const double lt0 = std::floor(std::log10(tMin)),
+                 lt1 = std::max(lt0 + 1, std::ceil(std::log10(tMax)));
+    const double le0 = std::floor(std::log10(eMin)),
+                 le1 = std::max(le0 + 1, std::ceil(std::log10(eMax)));
     const auto X = [&](double t) {
       return x0 + plotW * (std::log10(std::max(t, 1e-4)) - lt0) / (lt1 - lt0);
     };
@@ -254,8 +257,8 @@ std::string ReportSvg(const ReportSettings &s, const std::vector<ReportRow> &row
     }
     for (double d = le0; d <= le1; d += 1) {
       const double y = Y(std::pow(10.0, d));
-      out << "<line x1=\"" << x0 << "\" y1=\"" << y << "\" x2=\"" << x0 + plotW << "\" y2=\""
-          << y << "\" stroke=\"#dddddd\"/>\n<text x=\"" << x0 - 6 << "\" y=\"" << y + 4
+      out << "<line x1=\"" << x0 << "\" y1=\"" << y << "\" x2=\"" << x0 + plotW << "\" y2=\"" << y
+          << "\" stroke=\"#dddddd\"/>\n<text x=\"" << x0 - 6 << "\" y=\"" << y + 4
           << "\" text-anchor=\"end\">1e" << d << "</text>\n";
     }
     out << "<text x=\"" << x0 + plotW / 2 << "\" y=\"" << kPanelHeight - 12

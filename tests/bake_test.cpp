@@ -83,7 +83,9 @@ TEST(Bake, SmoothLimitEIsOneAndBIsSchlickWeight) {
           return std::array<double, 2>{a.weight, a.weight * a.schlickWeight};
         },
         4096, kDefaultReplicates, 7);
-    EXPECT_NEAR(sampled.mean[0], 1.0, StudentT99(kDefaultReplicates - 1) * sampled.standardError[0] + 1e-6) << mu;
+    EXPECT_NEAR(sampled.mean[0], 1.0,
+                StudentT99(kDefaultReplicates - 1) * sampled.standardError[0] + 1e-6)
+        << mu;
     EXPECT_NEAR(sampled.mean[1], std::pow(1.0 - mu, 5),
                 StudentT99(kDefaultReplicates - 1) * sampled.standardError[1] + 1e-6)
         << mu;

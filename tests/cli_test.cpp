@@ -1,13 +1,12 @@
 // The lutbake executable: bad input is refused with exit 2 (usage) or 1
 // (cannot write) and leaves nothing behind; output does not depend on --threads.
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
-#include <OpenImageIO/imageio.h>
-
 #include <fstream>
 
 namespace {
@@ -144,9 +143,9 @@ namespace {
 
 TEST(Cli, ErrorMapHasTheTableLayoutAndItsBounds) {
   const fs::path out = Scratch("errmap");
-  const CommandResult r =
-      Lutbake("bake --out " + out.string() + " --tables dfg --size 4 --samples 64 --error-map "
-              "--format exr");
+  const CommandResult r = Lutbake("bake --out " + out.string() +
+                                  " --tables dfg --size 4 --samples 64 --error-map "
+                                  "--format exr");
   ASSERT_EQ(r.status, 0) << r.output;
   auto image = OIIO::ImageInput::open((out / "dfg.err.exr").string());
   ASSERT_TRUE(image);
@@ -167,8 +166,7 @@ TEST(Cli, ToleranceRunReportsWhatItReached) {
   const CommandResult r = Lutbake("bake --out " + out.string() +
                                   " --tables E --size 4 --tolerance 1e-5 --json --format bin");
   ASSERT_EQ(r.status, 0) << r.output;
-  EXPECT_NE(r.output.find("tolerance 1e-05 reached on every texel"), std::string::npos)
-      << r.output;
+  EXPECT_NE(r.output.find("tolerance 1e-05 reached on every texel"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("\"quadratureTexels\": 16"), std::string::npos) << r.output;
   fs::remove_all(out);
   // Sampling alone, capped below what 1e-5 needs: refused, nothing written.

@@ -46,9 +46,9 @@ TEST(Report, ReferenceAgreesWithIndependentValuesAtTexelPoints) {
   // independent points of tests/data it must agree to 1e-10 there too.
   const std::vector<test::CsvRow> rows = test::ReadCsv(test::DataPath("ggx_E_AB.csv"));
   for (size_t i = 0; i < rows.size(); i += 29) {
-    const ReferenceAlbedo a = IntegrateReferenceAlbedo(
-        Ndf{NdfKind::kGgx, rows[i].Number("alpha")}, SmithForm::kCorrelated,
-        rows[i].Number("mu"), 1e-12);
+    const ReferenceAlbedo a =
+        IntegrateReferenceAlbedo(Ndf{NdfKind::kGgx, rows[i].Number("alpha")},
+                                 SmithForm::kCorrelated, rows[i].Number("mu"), 1e-12);
     EXPECT_NEAR(a.E, rows[i].Number("E_hc"), 1e-10) << rows[i].Text("mu");
   }
 }

@@ -25,9 +25,8 @@ Check CheckTable(const Table &t, double tolerance) {
   for (int y = 0; y < t.height(); ++y)
     for (int x = 0; x < t.width(); ++x) {
       const double r = t.y.TexelCenter(y);
-      const ReferenceAlbedo ref = IntegrateReferenceAlbedo(Ndf{NdfKind::kGgx, r * r},
-                                                           SmithForm::kCorrelated,
-                                                           t.x.TexelCenter(x), 1e-13);
+      const ReferenceAlbedo ref = IntegrateReferenceAlbedo(
+          Ndf{NdfKind::kGgx, r * r}, SmithForm::kCorrelated, t.x.TexelCenter(x), 1e-13);
       bool over = false, overTolerance = false;
       for (int c = 0; c < t.channels; ++c) {
         const double truth = t.kind == TableKind::kDfg ? (c ? ref.B : ref.A) : ref.E;

@@ -24,8 +24,9 @@ enum class Estimator {
 };
 
 inline constexpr Estimator kAllEstimators[] = {
-    Estimator::kUniform,    Estimator::kCosine,        Estimator::kNdf,
-    Estimator::kVisibleNormalRandom, Estimator::kVisibleNormal, Estimator::kQuadrature};
+    Estimator::kUniform,       Estimator::kCosine,
+    Estimator::kNdf,           Estimator::kVisibleNormalRandom,
+    Estimator::kVisibleNormal, Estimator::kQuadrature};
 
 // "vndf", "vndf-random", "ndf", "cosine", "uniform", "quadrature".
 std::string_view ToString(Estimator estimator);

@@ -97,7 +97,8 @@ QuadratureResultN<C> IntegrateAdaptiveN(const F &f, const std::vector<double> &b
   using gk_detail::Interval;
   std::vector<Interval<C>> intervals;
   for (size_t k = 0; k + 1 < breaks.size(); ++k)
-    if (breaks[k + 1] > breaks[k]) intervals.push_back(gk_detail::Rule<C>(f, breaks[k], breaks[k + 1]));
+    if (breaks[k + 1] > breaks[k])
+      intervals.push_back(gk_detail::Rule<C>(f, breaks[k], breaks[k + 1]));
   const auto byError = [](const Interval<C> &x, const Interval<C> &y) { return x.worst < y.worst; };
   std::make_heap(intervals.begin(), intervals.end(), byError);
   QuadratureResultN<C> result;
@@ -146,9 +147,9 @@ QuadratureResult IntegrateAdaptive(const F &f, double a, double b, double absTol
   std::vector<double> breaks(initialIntervals + 1);
   for (int k = 0; k <= initialIntervals; ++k) breaks[k] = a + (b - a) * k / initialIntervals;
   breaks.back() = b;
-  const QuadratureResultN<1> r = IntegrateAdaptiveN<1>(
-      [&](double x) { return std::array<double, 1>{f(x)}; }, breaks, absTolerance, relTolerance,
-      maxIntervals);
+  const QuadratureResultN<1> r =
+      IntegrateAdaptiveN<1>([&](double x) { return std::array<double, 1>{f(x)}; }, breaks,
+                            absTolerance, relTolerance, maxIntervals);
   QuadratureResult out;
   out.value = r.value[0];
   out.error = r.error[0];

@@ -26,7 +26,7 @@ namespace lutbake {
 
 struct ReferenceAlbedo {
   double E = 0, A = 0, B = 0;
-  double error = 0;  // error estimate of A plus that of B (so also a bound for E)
+  double error = 0;     // error estimate of A plus that of B (so also a bound for E)
   int evaluations = 0;  // integrand evaluations, A and B counted once
   bool converged = false;
 };

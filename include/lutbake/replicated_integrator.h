@@ -4,8 +4,8 @@
 // A texel's N samples are split into K replicates (K = min(replicates, N));
 // replicate k uses Sobol points 0 .. n_k - 1 (n_k = N / K, the first N mod K
 // replicates one more), Owen-scrambled with seeds derived from
-// (texelSeed, k, dimension); or, for plain Monte Carlo, independent points. Each replicate mean m_k is an unbiased estimate
-// of the integral, and the K of them are independent, so
+// (texelSeed, k, dimension); or, for plain Monte Carlo, independent points. Each replicate mean m_k
+// is an unbiased estimate of the integral, and the K of them are independent, so
 //   estimate        = (1/K) sum_k m_k
 //   standard error  = sqrt( sum_k (m_k - estimate)^2 / (K (K - 1)) ).
 // Sums over samples use Neumaier's compensated summation.
@@ -114,8 +114,9 @@ class ReplicatedAccumulator {
       for (int r = 0; r < replicates_; ++r) spread += Sqr(ReplicateMean(r, c) - mean);
       result.mean[c] = mean;
       result.standardError[c] =
-          replicates_ > 1 ? std::sqrt(spread / (static_cast<double>(replicates_) * (replicates_ - 1)))
-                          : 0.0;
+          replicates_ > 1
+              ? std::sqrt(spread / (static_cast<double>(replicates_) * (replicates_ - 1)))
+              : 0.0;
     }
     return result;
   }
@@ -142,9 +143,10 @@ ReplicatedEstimate<Channels> IntegrateReplicated(const SampleFn &sample, uint64_
   const int k = static_cast<int>(std::max<uint64_t>(1, std::min<uint64_t>(replicates, samples)));
   ReplicatedAccumulator<Dims, Channels> accumulator(k, texelSeed, points);
   for (int r = 0; r < accumulator.replicates(); ++r)
-    accumulator.ExtendReplicate(sample, r,
-                                samples / accumulator.replicates() +
-                                    (static_cast<uint64_t>(r) < samples % accumulator.replicates()));
+    accumulator.ExtendReplicate(
+        sample, r,
+        samples / accumulator.replicates() +
+            (static_cast<uint64_t>(r) < samples % accumulator.replicates()));
   return accumulator.Estimate();
 }
 

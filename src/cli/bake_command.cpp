@@ -54,9 +54,7 @@ TableKind ParseTable(const std::string &s) {
   return TableKind::kE;
 }
 
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
   app.add_option("--out", o.outDir, "Output directory (created if missing)")
@@ -144,8 +142,9 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
   const bool tolerance = o.tolerance > 0.0;
   settings.tolerance = o.tolerance;
   settings.samples = o.samples ? o.samples : tolerance ? kToleranceStartSamples : kDefaultSamples;
-  settings.replicates =
-      o.replicates ? o.replicates : tolerance ? kToleranceReplicates : kDefaultReplicates;
+  settings.replicates = o.replicates ? o.replicates
+                        : tolerance  ? kToleranceReplicates
+                                     : kDefaultReplicates;
   settings.allowQuadratureSwitch = !o.samplingOnly;
   settings.maxSamples = o.maxSamples;
   settings.seed = o.seed;

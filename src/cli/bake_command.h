@@ -16,7 +16,7 @@ struct BakeOptions {
   std::string smith = "correlated";
   std::string fresnel = "schlick";
   std::string estimator = "vndf";
-  int size = 0;  // 0: the per-table defaults
+  int size = 0;          // 0: the per-table defaults
   uint64_t samples = 0;  // 0: kDefaultSamples, or kToleranceStartSamples with --tolerance
   uint64_t seed = 0;
   int replicates = 0;    // 0: kDefaultReplicates, or kToleranceReplicates with --tolerance

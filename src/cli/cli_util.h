@@ -39,7 +39,6 @@ CLI::Validator InRange(T lo, T hi, const std::string &what) {
       "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
 }
 
-
 // Checks that `dir` is (or can become) a writable directory, creating it if
 // missing. Returns an empty string on success, else the reason; sets
 // *usageError when the problem is the value itself (a file, not a directory).

@@ -4,8 +4,8 @@
 #include <iostream>
 
 #include "bake_command.h"
-#include "report_command.h"
 #include "lutbake/bake.h"
+#include "report_command.h"
 
 namespace {
 

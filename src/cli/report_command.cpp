@@ -100,8 +100,7 @@ int RunReport(const ReportOptions &o) {
   try {
     AtomicOutputSet output;
     WriteText(output, (fs::path(o.outDir) / "report.csv").string(), ReportCsv(rows));
-    WriteText(output, (fs::path(o.outDir) / "report.md").string(),
-              ReportMarkdown(settings, rows));
+    WriteText(output, (fs::path(o.outDir) / "report.md").string(), ReportMarkdown(settings, rows));
     WriteText(output, (fs::path(o.outDir) / "report.svg").string(), ReportSvg(settings, rows));
     output.Commit();
   } catch (const IoError &e) {
