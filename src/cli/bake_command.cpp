@@ -166,9 +166,7 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
     return usageError ? 2 : 1;
   }
 
-  const int threads = o.threads > 0
-                          ? o.threads
-                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = ThreadCount(o.threads);
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
                                   static_cast<size_t>(threads));
 

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <sstream>
+#include <thread>
 
 namespace lutbake::cli {
 
@@ -121,6 +122,11 @@ std::string PrepareOutputDirectory(const std::string &dir, bool *created, bool *
   std::fclose(f);
   std::remove(probe.c_str());
   return {};
+}
+
+int ThreadCount(int requested) {
+  return requested > 0 ? requested
+                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
 }  // namespace lutbake::cli

@@ -44,4 +44,7 @@ CLI::Validator InRange(T lo, T hi, const std::string &what) {
 // *usageError when the problem is the value itself (a file, not a directory).
 std::string PrepareOutputDirectory(const std::string &dir, bool *created, bool *usageError);
 
+// The worker threads to use: `requested`, or all cores when it is 0.
+int ThreadCount(int requested);
+
 }  // namespace lutbake::cli

@@ -85,9 +85,7 @@ int RunReport(const ReportOptions &o) {
     std::cerr << "lutbake report: --out " << o.outDir << ": " << problem << "\n";
     return usageError ? 2 : 1;
   }
-  const int threads = o.threads > 0
-                          ? o.threads
-                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = ThreadCount(o.threads);
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
                                   static_cast<size_t>(threads));
   // A progress line, rewritten in place, only when stderr is a terminal.
