@@ -29,7 +29,7 @@ void Verify(const std::string &path, int stride) {
   Table t = ReadBinaryTable(path);
   for (TableKind k : kAllTables)
     if (Meta(t, "table") == TableName(k)) t.kind = k;
-  const Ndf ndfKind{Meta(t, "ndf") == "beckmann" ? NdfKind::kBeckmann : NdfKind::kGgx, 0.0};
+  const NdfKind ndf = Meta(t, "ndf") == "beckmann" ? NdfKind::kBeckmann : NdfKind::kGgx;
   const SmithForm smith =
       Meta(t, "smith") == "separable" ? SmithForm::kSeparable : SmithForm::kCorrelated;
   struct Point {
@@ -47,11 +47,11 @@ void Verify(const std::string &path, int stride) {
     double ref[2] = {0, 0};
     if (t.kind == TableKind::kEavg) {
       const double r = t.x.TexelCenter(x);
-      ref[0] = IntegrateReferenceAlbedoAverage(Ndf{ndfKind.kind, r * r}, smith, 1e-12).value;
+      ref[0] = IntegrateReferenceAlbedoAverage(Ndf{ndf, r * r}, smith, 1e-12).value;
     } else {
       const double r = t.y.TexelCenter(y);
       const ReferenceAlbedo a =
-          IntegrateReferenceAlbedo(Ndf{ndfKind.kind, r * r}, smith, t.x.TexelCenter(x), 1e-13);
+          IntegrateReferenceAlbedo(Ndf{ndf, r * r}, smith, t.x.TexelCenter(x), 1e-13);
       ref[0] = t.kind == TableKind::kDfg ? a.A : a.E;
       ref[1] = a.B;
     }

@@ -162,9 +162,7 @@ bool SampleTexel(const BakeSettings &s, const SampleFn &sample, uint64_t samples
     const int k =
         static_cast<int>(std::max<uint64_t>(1, std::min<uint64_t>(s.replicates, samples)));
     ReplicatedAccumulator<Dims, Channels> acc(k, texelSeed, points);
-    for (int r = 0; r < k; ++r)
-      acc.ExtendReplicate(sample, r,
-                          samples / k + (static_cast<uint64_t>(r) < samples % k ? 1 : 0));
+    acc.ExtendTotal(sample, samples);
     finish(acc);
     return true;
   }
@@ -244,7 +242,7 @@ TexelResult AverageTexel(const BakeSettings &s, double alpha, size_t texel) {
         const Vec3 o = ViewDirection(mu_o);
         return std::array<double, 1>{estimator.Sample(o, ndf.MuLambda(mu_o), u[1], u[2]).weight};
       },
-      s.samples * kAverageSampleFactor, TexelSeed(TableKind::kEavg, texel, s.seed), &out);
+      SamplesPerTexel(TableKind::kEavg, s), TexelSeed(TableKind::kEavg, texel, s.seed), &out);
   if (sampled) return out;
   TexelResult q = QuadratureAverage(s, ndf);
   q.samples = out.samples;

@@ -116,7 +116,7 @@ std::vector<ReportRow> RunReport(const ReportSettings &s, const ReportProgressFn
           if (b.tolerance < 1e-10) break;
         } else {
           b.samples = uint64_t{4} << step;
-          if (b.samples > (uint64_t{1} << 26)) break;
+          if (b.samples > kDefaultMaxSamples) break;
         }
         // The next run costs about twice the last (half again for the
         // quadrature's next decade); stop when it would overrun the share.

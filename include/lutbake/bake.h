@@ -69,6 +69,8 @@ inline constexpr double kUnseenEventCount = 4.605170185988091;
 // reports is therefore kQuadratureErrorFactor x the estimate + the floor.
 inline constexpr double kQuadratureErrorFactor = 2.0;
 inline constexpr double kQuadratureErrorFloor = 1e-10;
+// Most samples per texel a --sampling-only tolerance run may spend (by default).
+inline constexpr uint64_t kDefaultMaxSamples = uint64_t{1} << 26;
 // Default tolerance of the quadrature outside tolerance runs.
 inline constexpr double kQuadratureDefaultTolerance = 1e-12;
 
@@ -90,7 +92,7 @@ struct BakeSettings {
   // Tolerance runs: may a texel switch to the quadrature (see above)? If
   // not, sampling alone continues up to maxSamples.
   bool allowQuadratureSwitch = true;
-  uint64_t maxSamples = uint64_t{1} << 26;
+  uint64_t maxSamples = kDefaultMaxSamples;
   std::string commandLine;  // recorded in the metadata
 };
 

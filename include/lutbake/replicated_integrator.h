@@ -104,6 +104,15 @@ class ReplicatedAccumulator {
     for (int r = 0; r < replicates_; ++r) ExtendReplicate(sample, r, n);
   }
 
+  // N samples in all, split over the replicates: n = N / K each, the first
+  // N mod K replicates one more.
+  template <typename SampleFn>
+  void ExtendTotal(const SampleFn &sample, uint64_t total) {
+    const uint64_t k = static_cast<uint64_t>(replicates_);
+    for (int r = 0; r < replicates_; ++r)
+      ExtendReplicate(sample, r, total / k + (static_cast<uint64_t>(r) < total % k ? 1 : 0));
+  }
+
   ReplicatedEstimate<Channels> Estimate() const {
     ReplicatedEstimate<Channels> result;
     for (int c = 0; c < Channels; ++c) {
@@ -142,11 +151,7 @@ ReplicatedEstimate<Channels> IntegrateReplicated(const SampleFn &sample, uint64_
                                                  PointSet points = PointSet::kScrambledSobol) {
   const int k = static_cast<int>(std::max<uint64_t>(1, std::min<uint64_t>(replicates, samples)));
   ReplicatedAccumulator<Dims, Channels> accumulator(k, texelSeed, points);
-  for (int r = 0; r < accumulator.replicates(); ++r)
-    accumulator.ExtendReplicate(
-        sample, r,
-        samples / accumulator.replicates() +
-            (static_cast<uint64_t>(r) < samples % accumulator.replicates()));
+  accumulator.ExtendTotal(sample, samples);
   return accumulator.Estimate();
 }
 

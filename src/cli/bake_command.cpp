@@ -148,7 +148,7 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
   settings.allowQuadratureSwitch = !o.samplingOnly;
   settings.maxSamples = o.maxSamples;
   settings.seed = o.seed;
-  if (!tolerance && (o.samplingOnly || o.maxSamples != (uint64_t{1} << 26))) {
+  if (!tolerance && (o.samplingOnly || o.maxSamples != kDefaultMaxSamples)) {
     std::cerr << "lutbake bake: --sampling-only and --max-samples apply only with --tolerance\n";
     return 2;
   }
@@ -159,12 +159,8 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
   std::vector<std::unique_ptr<TableWriter>> writers;
   for (const std::string &name : SplitList(o.formats)) writers.push_back(MakeWriter(name));
 
-  bool created = false, usageError = false;
-  const std::string problem = PrepareOutputDirectory(o.outDir, &created, &usageError);
-  if (!problem.empty()) {
-    std::cerr << "lutbake bake: --out " << o.outDir << ": " << problem << "\n";
-    return usageError ? 2 : 1;
-  }
+  bool created = false;
+  if (const int status = PrepareOutputOrComplain("bake", o.outDir, &created)) return status;
 
   const int threads = ThreadCount(o.threads);
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,

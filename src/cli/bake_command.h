@@ -22,7 +22,7 @@ struct BakeOptions {
   int replicates = 0;    // 0: kDefaultReplicates, or kToleranceReplicates with --tolerance
   double tolerance = 0;  // 0: a fixed-sample bake
   bool samplingOnly = false;
-  uint64_t maxSamples = uint64_t{1} << 26;
+  uint64_t maxSamples = kDefaultMaxSamples;
   bool errorMap = false;
   int threads = 0;  // 0: all cores
   std::string formats = "exr,bin,header";

@@ -124,6 +124,14 @@ std::string PrepareOutputDirectory(const std::string &dir, bool *created, bool *
   return {};
 }
 
+int PrepareOutputOrComplain(const std::string &command, const std::string &dir, bool *created) {
+  bool usageError = false;
+  const std::string problem = PrepareOutputDirectory(dir, created, &usageError);
+  if (problem.empty()) return 0;
+  std::fprintf(stderr, "lutbake %s: --out %s: %s\n", command.c_str(), dir.c_str(), problem.c_str());
+  return usageError ? 2 : 1;
+}
+
 int ThreadCount(int requested) {
   return requested > 0 ? requested
                        : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));

@@ -79,12 +79,8 @@ int RunReport(const ReportOptions &o) {
   settings.budgetSeconds = o.budget;
   settings.seed = o.seed;
 
-  bool created = false, usageError = false;
-  const std::string problem = PrepareOutputDirectory(o.outDir, &created, &usageError);
-  if (!problem.empty()) {
-    std::cerr << "lutbake report: --out " << o.outDir << ": " << problem << "\n";
-    return usageError ? 2 : 1;
-  }
+  bool created = false;
+  if (const int status = PrepareOutputOrComplain("report", o.outDir, &created)) return status;
   const int threads = ThreadCount(o.threads);
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
                                   static_cast<size_t>(threads));
