@@ -63,12 +63,7 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
   app.add_option("--tables", o.tables, "Tables to bake")
       ->capture_default_str()
       ->check(ListOf({"E", "Eavg", "Favg", "dfg"}));
-  app.add_option("--ndf", o.ndf, "Microfacet distribution")
-      ->capture_default_str()
-      ->check(OneOf({"ggx", "beckmann"}));
-  app.add_option("--smith", o.smith, "Smith masking-shadowing form")
-      ->capture_default_str()
-      ->check(OneOf({"correlated", "separable"}));
+  AddModelOptions(app, o.ndf, o.smith);
   app.add_option("--fresnel", o.fresnel,
                  "Fresnel model of the Favg table: schlick (axis F0 in [0,1]), dielectric (exact, "
                  "axis eta in [1,3]), conductor (exact, axes eta in [0,4] x k in [0,10])")

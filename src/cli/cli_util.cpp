@@ -132,6 +132,15 @@ int PrepareOutputOrComplain(const std::string &command, const std::string &dir, 
   return usageError ? 2 : 1;
 }
 
+void AddModelOptions(CLI::App &app, std::string &ndf, std::string &smith) {
+  app.add_option("--ndf", ndf, "Microfacet distribution")
+      ->capture_default_str()
+      ->check(OneOf({"ggx", "beckmann"}));
+  app.add_option("--smith", smith, "Smith masking-shadowing form")
+      ->capture_default_str()
+      ->check(OneOf({"correlated", "separable"}));
+}
+
 int ThreadCount(int requested) {
   return requested > 0 ? requested
                        : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));

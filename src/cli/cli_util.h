@@ -48,6 +48,10 @@ std::string PrepareOutputDirectory(const std::string &dir, bool *created, bool *
 // 0 when the directory is ready, else the exit status (2 usage, 1 runtime).
 int PrepareOutputOrComplain(const std::string &command, const std::string &dir, bool *created);
 
+// --ndf (ggx, beckmann) and --smith (correlated, separable), shared by the
+// subcommands that integrate the microfacet BRDF.
+void AddModelOptions(CLI::App &app, std::string &ndf, std::string &smith);
+
 // The worker threads to use: `requested`, or all cores when it is 0.
 int ThreadCount(int requested);
 

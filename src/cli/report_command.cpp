@@ -50,12 +50,7 @@ void SetupReportCommand(CLI::App &app, ReportOptions &o) {
       ->capture_default_str()
       ->type_name("N")
       ->check(InRange(1, 256, "texels per axis"));
-  app.add_option("--ndf", o.ndf, "Microfacet distribution")
-      ->capture_default_str()
-      ->check(OneOf({"ggx", "beckmann"}));
-  app.add_option("--smith", o.smith, "Smith masking-shadowing form")
-      ->capture_default_str()
-      ->check(OneOf({"correlated", "separable"}));
+  AddModelOptions(app, o.ndf, o.smith);
   app.add_option("--seed", o.seed, "Seed of the point sets")
       ->capture_default_str()
       ->type_name("S")
