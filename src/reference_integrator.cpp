@@ -52,11 +52,19 @@ std::array<double, 2> InnerIntegrand(const Ndf &ndf, SmithForm smith, const Inne
 
 // Outer (azimuth) breaks. theta_max(phi) swings from about pi/2 to about 0
 // as cos(phi) crosses [-mu_o, mu_o]: near grazing view that is a feature
-// of width ~mu_o around phi = pi/2 (a jump at mu_o = 0). Breaks at
-// pi/2 +- mu_o 4^k grade the start toward it; pi/2 itself is always a break.
+// of width ~mu_o around phi = pi/2 (a jump at mu_o = 0), and for
+// mu_o < alpha theta_max crosses the NDF's width alpha at |phi - pi/2| ~
+// mu_o / alpha. Breaks at pi/2 +- mu_o 4^k grade the start toward both
+// scales; pi/2 itself is always a break.
 std::vector<double> OuterBreaks(double mu_o) {
   std::vector<double> below, breaks;
-  for (double d = std::max(mu_o, 1e-6); d < 0.4 * kPi; d *= 4.0) below.push_back(d);
+  // The grading starts at mu_o itself (a floor of 1e-6 left mu_o = 1e-12,
+  // alpha = 1e-12 unconverged after 7 million evaluations). Below 1e-200 a
+  // feature of width mu_o is indistinguishable from the jump at mu_o = 0,
+  // which the break at pi/2 already handles; the floor bounds the grading
+  // to ~330 intervals a side.
+  constexpr double kSmallestGrading = 1e-200;
+  for (double d = std::max(mu_o, kSmallestGrading); d < 0.4 * kPi; d *= 4.0) below.push_back(d);
   breaks.push_back(0.0);
   for (int k = 1; k < kOuterUniformIntervals; ++k)
     if (0.5 * kPi * k / kOuterUniformIntervals < 0.5 * kPi - below.back())
@@ -91,7 +99,12 @@ QuadratureResultN<2> IntegrateSplitSum(const Ndf &ndf, SmithForm smith, double m
   int innerEvaluations = 0;
   const auto outer = [&](double phi) -> std::array<double, 2> {
     const InnerSetup setup{s_o, mu_o, L_o, std::cos(phi)};
-    const double thetaMax = 0.5 * (std::atan2(s_o * setup.cosPhi, mu_o) + 0.5 * kPi);
+    // theta_max = (atan2(s_o cos(phi), c_o) + pi/2) / 2, written as one
+    // atan2 of the vector turned by 90 degrees: the sum cancels when
+    // cos(phi) < 0 and mu_o is small (-pi/2 + mu_o / x loses mu_o / x to
+    // the rounding of pi/2), and the jitter of the upper limit kept the
+    // outer rule from converging at mu_o = alpha = 1e-12.
+    const double thetaMax = 0.5 * std::atan2(mu_o, -s_o * setup.cosPhi);
     double vMax;
     if (ndf.kind == NdfKind::kGgx) {
       vMax = std::atan2(std::sin(thetaMax), ndf.alpha * std::cos(thetaMax));

@@ -11,7 +11,7 @@
 //   Beckmann: xi = 1 - exp(-t^2), tan(theta) = alpha t,     d(xi) = 2 t exp(-t^2) dt
 // The horizon mu_i = 2 (o.h) cos(theta) - mu_o > 0 reads
 //   s_o cos(phi) sin(2 theta) + c_o cos(2 theta) > 0  <=>  theta < theta_max(phi),
-//   theta_max(phi) = (atan2(s_o cos(phi), c_o) + pi/2) / 2,
+//   theta_max(phi) = (atan2(s_o cos(phi), c_o) + pi/2) / 2 = atan2(c_o, -s_o cos(phi)) / 2,
 // so the inner integral stops exactly there and the integrand is smooth
 // inside (G2 falls to 0 linearly at the boundary). The outer integral is
 // split at phi = pi/2, where theta_max jumps when mu_o = 0.
