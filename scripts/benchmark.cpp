@@ -49,8 +49,7 @@ void VndfSamplesPerCore(benchmark::State &state) {
     const auto e = IntegrateReplicated<2, 2>(
         [&](const double(&u)[2]) {
           const AlbedoSample a = estimator.Sample(o, L_o, u[0], u[1]);
-          return std::array<double, 2>{a.weight * (1.0 - a.schlickWeight),
-                                       a.weight * a.schlickWeight};
+          return std::array<double, 2>{a.weight * a.schlickComplement, a.weight * a.schlickWeight};
         },
         samples, kDefaultReplicates, 1);
     benchmark::DoNotOptimize(e.mean[0]);

@@ -33,7 +33,8 @@ AlbedoSample SampleLight(const AlbedoEstimator &e, const Vec3 &o, double L_o, do
   const double g2OverMuO = SmithG2OverMuO(e.smith, o.z, mu_i, L_o, e.ndf.MuLambda(mu_i));
   const double d = e.ndf.D(h);
   const double w = cosine ? 0.25 * kPi * d * g2OverMuO / mu_i : 0.5 * kPi * d * g2OverMuO;
-  return {w, Pow5(1.0 - oh)};
+  const SchlickWeights fc = Schlick(oh);
+  return {w, fc.fc, fc.complement};
 }
 
 }  // namespace
@@ -46,7 +47,8 @@ AlbedoSample AlbedoEstimator::Sample(const Vec3 &o, double L_o, double u1, doubl
     const double mu_i = 2.0 * oh * h.z - mu_o;
     if (mu_i <= 0.0 || oh <= 0.0) return {};
     const double w = SmithG2OverG1o(smith, mu_o, mu_i, L_o, ndf.MuLambda(mu_i));
-    return {w, Pow5(1.0 - oh)};
+    const SchlickWeights fc = Schlick(oh);
+    return {w, fc.fc, fc.complement};
   }
   if (strategy == SampleStrategy::kCosine || strategy == SampleStrategy::kUniform)
     return SampleLight(*this, o, L_o, u1, u2);
@@ -57,7 +59,8 @@ AlbedoSample AlbedoEstimator::Sample(const Vec3 &o, double L_o, double u1, doubl
   const double mu_i = 2.0 * oh * h.z - mu_o;
   if (mu_i <= 0.0) return {};
   const double w = SmithG2OverMuO(smith, mu_o, mu_i, L_o, ndf.MuLambda(mu_i)) * oh / h.z;
-  return {w, Pow5(1.0 - oh)};
+  const SchlickWeights fc = Schlick(oh);
+  return {w, fc.fc, fc.complement};
 }
 
 }  // namespace lutbake

@@ -6,6 +6,8 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
+#include <stdexcept>
 
 #include "lutbake/albedo_estimator.h"
 #include "lutbake/reference_integrator.h"
@@ -67,17 +69,6 @@ uint64_t SamplesPerTexel(TableKind kind, const BakeSettings &settings) {
 
 namespace {
 
-std::string FormatDouble(double v) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.17g", v);
-  return buffer;
-}
-
-std::string DescribeAxis(const Axis &axis) {
-  return axis.name + " linear [" + FormatDouble(axis.min) + ", " + FormatDouble(axis.max) + "], " +
-         std::to_string(axis.count) + " texels";
-}
-
 // The per-texel integral, whatever the estimator: returns the values and
 // their error bounds for up to 2 channels, and what it cost.
 using TexelResult = PointValue;
@@ -95,10 +86,6 @@ PointSet PointSetOf(Estimator estimator) {
   return estimator == Estimator::kVisibleNormal || estimator == Estimator::kNdf
              ? PointSet::kScrambledSobol
              : PointSet::kIndependentRandom;
-}
-
-uint64_t TexelSeed(TableKind kind, size_t texel, uint64_t seed) {
-  return HashValues({static_cast<uint64_t>(kind), texel, seed});
 }
 
 double QuadratureTolerance(const BakeSettings &s) {
@@ -190,8 +177,29 @@ bool SampleTexel(const BakeSettings &s, const SampleFn &sample, uint64_t samples
 
 }  // namespace
 
+uint64_t PointSeed(TableKind kind, double x, double y, uint64_t seed) {
+  uint64_t xBits, yBits;
+  std::memcpy(&xBits, &x, sizeof x);
+  std::memcpy(&yBits, &y, sizeof y);
+  return HashValues({static_cast<uint64_t>(kind), xBits, yBits, seed});
+}
+
+namespace {
+
+void CheckAlpha(double alpha) {
+  // Written so that NaN fails too.
+  if (!(alpha == 0.0 || (alpha >= kMinimumAlpha && alpha <= 1.0)))
+    throw std::domain_error("alpha " + FormatDouble(alpha) + " is outside {0} and [" +
+                            FormatDouble(kMinimumAlpha) + ", 1]");
+}
+
+}  // namespace
+
 PointValue EvaluateAlbedo(TableKind kind, const BakeSettings &s, double mu_o, double alpha,
                           uint64_t pointSeed) {
+  CheckAlpha(alpha);
+  if (!(mu_o >= 0.0 && mu_o <= 1.0))
+    throw std::domain_error("mu " + FormatDouble(mu_o) + " is outside [0, 1]");
   const Ndf ndf{s.ndf, alpha};
   const bool split = kind == TableKind::kDfg;
   // A mirror (alpha = 0) is exact, not sampled: its only microfacet is n, so
@@ -208,8 +216,7 @@ PointValue EvaluateAlbedo(TableKind kind, const BakeSettings &s, double mu_o, do
         s,
         [&](const double(&u)[2]) {
           const AlbedoSample a = estimator.Sample(o, L_o, u[0], u[1]);
-          return std::array<double, 2>{a.weight * (1.0 - a.schlickWeight),
-                                       a.weight * a.schlickWeight};
+          return std::array<double, 2>{a.weight * a.schlickComplement, a.weight * a.schlickWeight};
         },
         s.samples, pointSeed, &out);
   } else {
@@ -226,11 +233,10 @@ PointValue EvaluateAlbedo(TableKind kind, const BakeSettings &s, double mu_o, do
   return q;
 }
 
-namespace {
-
 // E_avg(r) = 2 integral_0^1 E(mu) mu dmu as one 3D integral: mu = sqrt(u0)
 // has density 2 mu, so the weight is the E estimator's at that mu.
-TexelResult AverageTexel(const BakeSettings &s, double alpha, size_t texel) {
+PointValue EvaluateAlbedoAverage(const BakeSettings &s, double alpha, uint64_t pointSeed) {
+  CheckAlpha(alpha);
   const Ndf ndf{s.ndf, alpha};
   if (alpha == 0.0 || s.estimator == Estimator::kQuadrature) return QuadratureAverage(s, ndf);
   const AlbedoEstimator estimator{ndf, s.smith, StrategyOf(s.estimator)};
@@ -242,14 +248,14 @@ TexelResult AverageTexel(const BakeSettings &s, double alpha, size_t texel) {
         const Vec3 o = ViewDirection(mu_o);
         return std::array<double, 1>{estimator.Sample(o, ndf.MuLambda(mu_o), u[1], u[2]).weight};
       },
-      SamplesPerTexel(TableKind::kEavg, s), TexelSeed(TableKind::kEavg, texel, s.seed), &out);
+      SamplesPerTexel(TableKind::kEavg, s), pointSeed, &out);
   if (sampled) return out;
   TexelResult q = QuadratureAverage(s, ndf);
   q.samples = out.samples;
   return q;
 }
 
-TexelResult FresnelTexel(FresnelModel model, double x, double y) {
+PointValue EvaluateFresnelAverage(FresnelModel model, double x, double y) {
   FresnelAverageResult r;
   switch (model) {
     case FresnelModel::kSchlick: r = SchlickFresnelAverage(x); break;
@@ -259,10 +265,9 @@ TexelResult FresnelTexel(FresnelModel model, double x, double y) {
   TexelResult out;
   out.value[0] = r.value;
   out.error[0] = r.error;
+  out.quadrature = true;
   return out;
 }
-
-}  // namespace
 
 Table BakeTable(TableKind kind, const BakeSettings &s, const ProgressFn &progress,
                 BakeStats *statsOut) {
@@ -303,18 +308,20 @@ Table BakeTable(TableKind kind, const BakeSettings &s, const ProgressFn &progres
           switch (kind) {
             case TableKind::kE:
             case TableKind::kDfg: {
-              const double r_ = table.y.TexelCenter(iy);
-              texel = EvaluateAlbedo(kind, s, table.x.TexelCenter(ix), r_ * r_,
-                                     TexelSeed(kind, t, s.seed));
+              const double mu = table.x.TexelCenter(ix), r_ = table.y.TexelCenter(iy);
+              const double alpha = r_ * r_;
+              texel = EvaluateAlbedo(kind, s, mu, alpha, PointSeed(kind, mu, alpha, s.seed));
               break;
             }
             case TableKind::kEavg: {
               const double r_ = table.x.TexelCenter(ix);
-              texel = AverageTexel(s, r_ * r_, t);
+              const double alpha = r_ * r_;
+              texel = EvaluateAlbedoAverage(s, alpha, PointSeed(kind, alpha, 0.0, s.seed));
               break;
             }
             case TableKind::kFavg:
-              texel = FresnelTexel(s.fresnel, table.x.TexelCenter(ix), table.y.TexelCenter(iy));
+              texel = EvaluateFresnelAverage(s.fresnel, table.x.TexelCenter(ix),
+                                             table.y.TexelCenter(iy));
               break;
           }
           for (int c = 0; c < table.channels; ++c) {

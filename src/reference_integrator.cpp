@@ -46,8 +46,8 @@ std::array<double, 2> InnerIntegrand(const Ndf &ndf, SmithForm smith, const Inne
   // (o.h) / cos(theta) * G2 / mu_o, the integrand in xi.
   const double w =
       jacobian * (oh / cosTheta) * SmithG2OverMuO(smith, s.c_o, mu_i, s.L_o, ndf.MuLambda(mu_i));
-  const double fc = Pow5(1.0 - oh);
-  return {w * (1.0 - fc), w * fc};
+  const SchlickWeights fc = Schlick(oh);
+  return {w * fc.complement, w * fc.fc};
 }
 
 // Outer (azimuth) breaks. theta_max(phi) swings from about pi/2 to about 0
@@ -137,8 +137,9 @@ ReferenceAlbedo IntegrateReferenceAlbedo(const Ndf &ndf, SmithForm smith, double
   if (ndf.alpha == 0.0) {
     // A mirror: the only microfacet is n, the light is the mirror direction
     // with o.h = mu_o, and G2 = 1. Exact, no integral.
-    result.B = Pow5(1.0 - mu_o);
-    result.A = 1.0 - result.B;
+    const SchlickWeights fc = Schlick(mu_o);
+    result.B = fc.fc;
+    result.A = fc.complement;
     result.E = 1.0;
     result.converged = true;
     return result;

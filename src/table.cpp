@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 
 namespace lutbake {
 
@@ -13,6 +16,37 @@ const char *TableName(TableKind kind) {
     case TableKind::kDfg: return "dfg";
   }
   return "?";
+}
+
+std::string FormatDouble(double v) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.17g", v);
+  return buffer;
+}
+
+std::string DescribeAxis(const Axis &axis) {
+  return axis.name + " linear [" + FormatDouble(axis.min) + ", " + FormatDouble(axis.max) + "], " +
+         std::to_string(axis.count) + " texels";
+}
+
+bool ParseAxisDescription(const std::string &text, Axis *axis) {
+  // name, " linear [", min, ", ", max, "], ", count, " texels"
+  const size_t space = text.find(" linear [");
+  if (space == std::string::npos || space == 0) return false;
+  const char *p = text.c_str() + space + 9;
+  char *end = nullptr;
+  const double lo = std::strtod(p, &end);
+  if (end == p || std::strncmp(end, ", ", 2) != 0) return false;
+  p = end + 2;
+  const double hi = std::strtod(p, &end);
+  if (end == p || std::strncmp(end, "], ", 3) != 0) return false;
+  p = end + 3;
+  const long count = std::strtol(p, &end, 10);
+  if (end == p || std::strcmp(end, " texels") != 0) return false;
+  if (!(std::isfinite(lo) && std::isfinite(hi) && hi > lo) || count < 1 || count > (1 << 20))
+    return false;
+  *axis = Axis{text.substr(0, space), lo, hi, static_cast<int>(count)};
+  return true;
 }
 
 double Table::MaxError() const {

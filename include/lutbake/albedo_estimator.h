@@ -37,8 +37,9 @@ enum class SampleStrategy { kVisibleNormal, kNdf, kCosine, kUniform };
 std::string_view ToString(SampleStrategy strategy);
 
 struct AlbedoSample {
-  double weight = 0.0;         // contribution to E
-  double schlickWeight = 0.0;  // Fc = (1 - o.h)^5, so that B gets weight * Fc
+  double weight = 0.0;             // contribution to E
+  double schlickWeight = 0.0;      // Fc = (1 - o.h)^5, so that B gets weight * Fc
+  double schlickComplement = 0.0;  // 1 - Fc without cancellation: A gets weight * this
 };
 
 struct AlbedoEstimator {

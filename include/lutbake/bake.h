@@ -118,8 +118,14 @@ void FresnelAxes(FresnelModel model, int count, Axis *x, Axis *y);
 Table BakeTable(TableKind kind, const BakeSettings &settings, const ProgressFn &progress = {},
                 BakeStats *stats = nullptr);
 
-// The value of one texel-free point (mu_o, alpha) of E (channel 0) or of the
-// split sum (A, B), and its error bound, with the settings' estimator.
+// The smallest non-zero alpha the albedo integrators accept (perceptual
+// roughness 1e-12). Far below it alpha^2 leaves the normal doubles (alpha <
+// 1e-154) and the grazing limit mu_o = 0 loses its scale; no renderer can
+// tell a lobe 1e-24 rad wide from a mirror, and alpha = 0 is exact.
+inline constexpr double kMinimumAlpha = 1e-24;
+
+// One point, anywhere (not only at texel centres): its value in up to two
+// channels, its error bound and what it cost.
 struct PointValue {
   double value[2] = {0, 0};
   double error[2] = {0, 0};
@@ -127,8 +133,26 @@ struct PointValue {
   uint64_t evaluations = 0;
   bool quadrature = false;
 };
+
+// The seed of a sampled point: a hash of the table, the point's coordinates
+// (their bit patterns) and the user's seed. A bake seeds each texel with the
+// seed of its centre, so `lutbake eval` at a texel centre with the bake's
+// settings reproduces that texel bit for bit.
+uint64_t PointSeed(TableKind kind, double x, double y, uint64_t seed);
+
+// E (channel 0) or the split sum (A, B) at (mu_o, alpha), with the settings'
+// estimator (a tolerance run when settings.tolerance > 0). mu_o in [0, 1]:
+// mu_o = 0 is the grazing limit, evaluated by continuity (the integrands
+// below are written in forms that stay finite there). alpha = 0 is the
+// mirror, exact. Throws std::domain_error for alpha in (0, kMinimumAlpha),
+// alpha > 1 or mu_o outside [0, 1].
 PointValue EvaluateAlbedo(TableKind kind, const BakeSettings &settings, double mu_o, double alpha,
                           uint64_t pointSeed);
+// E_avg(alpha) = 2 integral_0^1 E(mu) mu dmu, same conventions.
+PointValue EvaluateAlbedoAverage(const BakeSettings &settings, double alpha, uint64_t pointSeed);
+// F_avg of a Fresnel model at its parameters: x = F0 (Schlick) or eta
+// (dielectric, conductor); y = k (conductor only). Deterministic quadrature.
+PointValue EvaluateFresnelAverage(FresnelModel model, double x, double y);
 
 // Samples per texel that a fixed-sample bake uses for a table (E_avg gets more).
 uint64_t SamplesPerTexel(TableKind kind, const BakeSettings &settings);

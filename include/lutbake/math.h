@@ -26,6 +26,19 @@ constexpr double Pow5(double x) {
   return x2 * x2 * x;
 }
 
+// The Schlick weight Fc = (1 - c)^5 and its complement 1 - Fc, for c =
+// o.h in [0, 1]. The complement is written as c (1 + y + y^2 + y^3 + y^4),
+// y = 1 - c (the geometric sum of 1 - y^5): 1 - Fc cancels for small c
+// (grazing view, where A ~ 5 mu_o), this does not.
+struct SchlickWeights {
+  double fc, complement;
+};
+constexpr SchlickWeights Schlick(double c) {
+  const double y = 1.0 - c;
+  const double y2 = y * y;
+  return {y2 * y2 * y, c * (1.0 + y + y2 + y2 * y + y2 * y2)};
+}
+
 constexpr double Clamp(double x, double lo, double hi) { return x < lo ? lo : (x > hi ? hi : x); }
 
 // sqrt of a quantity that is non-negative in exact arithmetic but may come out

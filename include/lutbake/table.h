@@ -59,6 +59,15 @@ struct Table {
   const std::string *FindMetadata(const std::string &key) const;
 };
 
+// A double printed with 17 significant digits: reads back to the same double.
+std::string FormatDouble(double v);
+
+// An axis in words, as the metadata key axisX / axisY holds it:
+//   "mu linear [0, 1], 32 texels"
+// and the parser of that text (false when it is not of that form).
+std::string DescribeAxis(const Axis &axis);
+bool ParseAxisDescription(const std::string &text, Axis *axis);
+
 // The error map of a table: a table of the same axes and channels whose
 // values are the per-texel error bounds (written as T.err.exr).
 Table ErrorMapOf(const Table &table);
