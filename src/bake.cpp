@@ -89,9 +89,10 @@ PointSet PointSetOf(Estimator estimator) {
 }
 
 double QuadratureTolerance(const BakeSettings &s) {
-  // A tolerance run asks the quadrature for EPS / 8: its reported bound,
-  // twice the estimate plus the floor, then stays below EPS down to 1e-9.
-  return s.tolerance > 0.0 ? 0.125 * s.tolerance : kQuadratureDefaultTolerance;
+  // A tolerance run asks the quadrature for EPS / 32: its reported bound,
+  // 16 x the estimate plus the floor, then stays below EPS down to 1e-9.
+  return s.tolerance > 0.0 ? s.tolerance / (2.0 * kQuadratureErrorFactor)
+                           : kQuadratureDefaultTolerance;
 }
 
 TexelResult QuadratureAlbedo(bool split, const BakeSettings &s, const Ndf &ndf, double mu_o) {
@@ -393,12 +394,14 @@ Table BakeTable(TableKind kind, const BakeSettings &s, const ProgressFn &progres
   std::snprintf(bound, sizeof bound,
                 "sampled texels: %.3f standard errors (Student t, %d dof, two-sided 99%%) from the "
                 "spread of %d independent %s, plus 4.6 / N for events no sample met; quadrature "
-                "texels: 2 x the Gauss-Kronrod estimate + %.0e",
+                "texels: %.0f x the Gauss-Kronrod estimate + %.0e",
                 StudentT99(replicates - 1), replicates - 1, replicates,
-                random ? "random point sets" : "scrambles", kQuadratureErrorFloor);
+                random ? "random point sets" : "scrambles", kQuadratureErrorFactor,
+                kQuadratureErrorFloor);
   m.emplace_back("errorBound", !albedo   ? "Gauss-Kronrod error estimate"
                                : sampled ? bound
-                                         : "2 x the Gauss-Kronrod estimate + 1e-10");
+                                         : FormatDouble(kQuadratureErrorFactor) +
+                                               " x the Gauss-Kronrod estimate + 1e-10");
   m.emplace_back("errorMax", FormatDouble(table.MaxError()));
   m.emplace_back("errorRms", FormatDouble(table.RmsError()));
   m.emplace_back("lutbakeVersion", LutbakeVersion());

@@ -106,30 +106,54 @@ Table ReadBinaryTable(const std::string &path) {
   std::ostringstream buffer;
   buffer << file.rdbuf();
   const std::string in = buffer.str();
+  // Every field is validated before it is used: the file may come from
+  // anywhere (lutbake check reads files it did not write).
   if (in.size() < kFixedHeaderBytes || std::memcmp(in.data(), kBinaryMagic, 8) != 0)
     throw IoError(path + ": not a lutbake .bin file (bad magic)");
-  if (GetU32(in, 8) != kBinaryVersion) throw IoError(path + ": unsupported .bin version");
+  if (GetU32(in, 8) != kBinaryVersion)
+    throw IoError(path + ": .bin version " + std::to_string(GetU32(in, 8)) +
+                  " (this lutbake reads version " + std::to_string(kBinaryVersion) + ")");
   const size_t dataOffset = GetU32(in, 12);
   Table table;
   const uint32_t dims = GetU32(in, 16);
-  table.channels = static_cast<int>(GetU32(in, 28));
-  const uint32_t flags = GetU32(in, 36);
+  const uint32_t width = GetU32(in, 20), height = GetU32(in, 24), channels = GetU32(in, 28);
+  const uint32_t valueType = GetU32(in, 32), flags = GetU32(in, 36);
+  if (dims != 1 && dims != 2) throw IoError(path + ": dimensions must be 1 or 2");
+  if (channels != 1 && channels != 2) throw IoError(path + ": channels must be 1 or 2");
+  if (valueType != 1) throw IoError(path + ": value type must be 1 (float32)");
+  table.channels = static_cast<int>(channels);
+  table.channelNames =
+      channels == 2 ? std::vector<std::string>{"R", "G"} : std::vector<std::string>{"Y"};
   table.x = GetAxis(in, 40);
   table.y = GetAxis(in, 88);
-  if (dims == 1) table.y.name.clear();
+  if (dims == 1) {
+    table.y = Axis{"", 0.0, 1.0, 1};
+  }
+  constexpr uint32_t kMaxCount = 1u << 16;
+  if (width == 0 || height == 0 || width > kMaxCount || height > kMaxCount ||
+      static_cast<uint32_t>(table.x.count) != width ||
+      static_cast<uint32_t>(table.y.count) != height || (dims == 1 && height != 1))
+    throw IoError(path + ": texel counts disagree with the axes or exceed 65536");
+  if (!(table.x.max > table.x.min) || (dims == 2 && !(table.y.max > table.y.min)))
+    throw IoError(path + ": an axis range is empty or not a number");
   const size_t metadataLength = GetU32(in, 136);
-  if (kFixedHeaderBytes + metadataLength > dataOffset)
-    throw IoError(path + ": bad metadata length");
+  if (dataOffset % 8 != 0 || dataOffset > in.size() ||
+      kFixedHeaderBytes + metadataLength > dataOffset)
+    throw IoError(path + ": bad data offset or metadata length");
   std::istringstream lines(in.substr(kFixedHeaderBytes, metadataLength));
   for (std::string line; std::getline(lines, line);) {
     const size_t eq = line.find('=');
     if (eq != std::string::npos)
       table.metadata.emplace_back(line.substr(0, eq), line.substr(eq + 1));
   }
-  const size_t count = static_cast<size_t>(table.width()) * table.height() * table.channels;
+  for (TableKind k : kAllTables)
+    if (const std::string *name = table.FindMetadata("table"); name && *name == TableName(k))
+      table.kind = k;
+  const size_t count = static_cast<size_t>(width) * height * channels;
   const size_t blocks = (flags & 1u) ? 2 : 1;
   if (in.size() != dataOffset + blocks * 4 * count)
-    throw IoError(path + ": truncated or oversized");
+    throw IoError(path + ": " + std::to_string(in.size()) + " bytes, expected " +
+                  std::to_string(dataOffset + blocks * 4 * count) + " (truncated or oversized)");
   table.values.resize(count);
   for (size_t i = 0; i < count; ++i) table.values[i] = GetF32(in, dataOffset + 4 * i);
   if (flags & 1u) {

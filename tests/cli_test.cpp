@@ -9,32 +9,15 @@
 #include <filesystem>
 #include <fstream>
 
+#include "cli_run.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandResult {
-  int status;
-  std::string output;
-};
-
-CommandResult Lutbake(const std::string &args) {
-  const std::string log =
-      (fs::temp_directory_path() / ("lutbake_cli_" + std::to_string(::getpid()) + ".log")).string();
-  const std::string command = std::string(LUTBAKE_BINARY) + " " + args + " > " + log + " 2>&1";
-  const int raw = std::system(command.c_str());
-  std::ifstream in(log);
-  std::string output((std::istreambuf_iterator<char>(in)), {});
-  fs::remove(log);
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, output};
-}
-
-fs::path Scratch(const std::string &name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("lutbake_cli_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  return dir;
-}
+using lutbake::test::CommandResult;
+using lutbake::test::Lutbake;
+using lutbake::test::Scratch;
 
 struct BadInput {
   std::string args, mentions;

@@ -21,7 +21,6 @@ namespace lutbake::cli {
 namespace {
 
 constexpr int kMaxSize = 4096;
-constexpr uint64_t kMaxSamples = uint64_t{1} << 30;
 constexpr int kMaxThreads = 1024;
 
 }  // namespace
@@ -37,24 +36,12 @@ FresnelModel ParseFresnel(const std::string &s) {
   if (s == "conductor") return FresnelModel::kConductor;
   return FresnelModel::kSchlick;
 }
-Estimator EstimatorNamed(const std::string &s) {
-  Estimator e = Estimator::kVisibleNormal;
-  ParseEstimator(s, &e);
-  return e;
-}
 
-std::vector<std::string> EstimatorNames() {
-  std::vector<std::string> names;
-  for (Estimator e : kAllEstimators) names.emplace_back(ToString(e));
-  return names;
-}
 TableKind ParseTable(const std::string &s) {
   for (TableKind k : kAllTables)
     if (s == TableName(k)) return k;
   return TableKind::kE;
 }
-
-namespace {}  // namespace
 
 void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
   app.add_option("--out", o.outDir, "Output directory (created if missing)")
@@ -69,47 +56,13 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
                  "axis eta in [1,3]), conductor (exact, axes eta in [0,4] x k in [0,10])")
       ->capture_default_str()
       ->check(OneOf({"schlick", "dielectric", "conductor"}));
-  app.add_option("--estimator", o.estimator,
-                 "vndf: visible-normal sampling, scrambled Sobol points; vndf-random: the same "
-                 "with independent random points; ndf: NDF sampling; cosine, uniform: light "
-                 "directions cosine-weighted or uniform (baselines); quadrature: deterministic "
-                 "adaptive Gauss-Kronrod")
-      ->capture_default_str()
-      ->check(OneOf(EstimatorNames()));
   app.add_option("--size", o.size,
                  "Texels per axis for every table (default: 32 for E, Eavg, Favg; 128 for dfg)")
       ->type_name("N")
       ->check(InRange(1, kMaxSize, "texels per axis"));
-  app.add_option("--samples", o.samples,
-                 "Samples per texel of E and dfg (Eavg: 32x as many); at least 2 so that the "
-                 "error can be estimated. Default 65536; with --tolerance, the first round "
-                 "(default 4096)")
-      ->type_name("N")
-      ->check(InRange<uint64_t>(2, kMaxSamples, "samples per texel"));
-  app.add_option("--replicates", o.replicates,
-                 "Independent scrambles per texel whose spread gives the error bound (default 4; "
-                 "8 with --tolerance)")
-      ->type_name("K")
-      ->check(InRange(2, 64, "replicates"));
-  app.add_option("--tolerance", o.tolerance,
-                 "Refine every texel of E, Eavg and dfg (in rounds that double the samples) until "
-                 "its error bound is at most EPS; texels where the quadrature is cheaper switch "
-                 "to it")
-      ->type_name("EPS")
-      ->check(RealInRange(1e-9, 0.1, "a number from 1e-9 to 0.1"));
-  app.add_flag("--sampling-only", o.samplingOnly,
-               "With --tolerance: never switch a texel to the quadrature; sampling continues "
-               "up to --max-samples");
-  app.add_option("--max-samples", o.maxSamples,
-                 "With --tolerance --sampling-only: most samples per texel (default 2^26)")
-      ->type_name("N")
-      ->check(InRange<uint64_t>(2, uint64_t{1} << 36, "samples per texel"));
+  AddSamplingOptions(app, o.sampling, "texel");
   app.add_flag("--error-map", o.errorMap,
                "Also write T.err.exr: the per-texel error bound, same layout and channels as T");
-  app.add_option("--seed", o.seed, "Seed of the point-set scrambling")
-      ->capture_default_str()
-      ->type_name("S")
-      ->check(InRange<uint64_t>(0, UINT64_MAX, "(any unsigned 64-bit integer)"));
   app.add_option("--threads", o.threads,
                  "Worker threads (default: all cores); output does not depend on it")
       ->type_name("N")
@@ -131,22 +84,12 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
   settings.ndf = ParseNdf(o.ndf);
   settings.smith = ParseSmith(o.smith);
   settings.fresnel = ParseFresnel(o.fresnel);
-  settings.estimator = EstimatorNamed(o.estimator);
   if (o.size > 0)
     settings.sizeE = settings.sizeEavg = settings.sizeFavg = settings.sizeDfg = o.size;
-  const bool tolerance = o.tolerance > 0.0;
-  settings.tolerance = o.tolerance;
-  settings.samples = o.samples ? o.samples : tolerance ? kToleranceStartSamples : kDefaultSamples;
-  settings.replicates = o.replicates ? o.replicates
-                        : tolerance  ? kToleranceReplicates
-                                     : kDefaultReplicates;
-  settings.allowQuadratureSwitch = !o.samplingOnly;
-  settings.maxSamples = o.maxSamples;
-  settings.seed = o.seed;
-  if (!tolerance && (o.samplingOnly || o.maxSamples != kDefaultMaxSamples)) {
-    std::cerr << "lutbake bake: --sampling-only and --max-samples apply only with --tolerance\n";
-    return 2;
-  }
+  if (const int status =
+          ApplySamplingOptions("bake", o.sampling, Estimator::kVisibleNormal, &settings))
+    return status;
+  const bool tolerance = settings.tolerance > 0.0;
   settings.commandLine = commandLine;
 
   std::vector<TableKind> tables;
@@ -165,7 +108,7 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
   summary["lutbakeVersion"] = LutbakeVersion();
   summary["out"] = o.outDir;
   summary["threads"] = threads;
-  if (tolerance) summary["tolerance"] = o.tolerance;
+  if (tolerance) summary["tolerance"] = settings.tolerance;
   const auto bakeStart = std::chrono::steady_clock::now();
   summary["tables"] = nlohmann::ordered_json::array();
   try {
@@ -220,8 +163,8 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
       summary["tables"].push_back(entry);
     }
     if (!unreached.empty()) {
-      std::cerr << "lutbake bake: --tolerance " << o.tolerance << " not reached within "
-                << "--max-samples " << o.maxSamples << " in " << JoinNames(unreached)
+      std::cerr << "lutbake bake: --tolerance " << settings.tolerance << " not reached within "
+                << "--max-samples " << settings.maxSamples << " in " << JoinNames(unreached)
                 << "; nothing written. Raise --max-samples or drop --sampling-only.\n";
       output.Discard();  // removes the temporaries, so that the directory is empty again
       if (created) {
@@ -251,7 +194,7 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
     char line[160];
     std::snprintf(line, sizeof line,
                   "tolerance %.3g reached on every texel: max bound %.2e, %.2f s in all\n",
-                  o.tolerance, worst, totalSeconds);
+                  settings.tolerance, worst, totalSeconds);
     std::cerr << line;
   }
   if (o.json) std::cout << summary.dump(2) << "\n";

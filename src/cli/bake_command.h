@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "lutbake/bake.h"
+#include "sampling_options.h"
 
 namespace lutbake::cli {
 
@@ -15,14 +16,8 @@ struct BakeOptions {
   std::string ndf = "ggx";
   std::string smith = "correlated";
   std::string fresnel = "schlick";
-  std::string estimator = "vndf";
-  int size = 0;          // 0: the per-table defaults
-  uint64_t samples = 0;  // 0: kDefaultSamples, or kToleranceStartSamples with --tolerance
-  uint64_t seed = 0;
-  int replicates = 0;    // 0: kDefaultReplicates, or kToleranceReplicates with --tolerance
-  double tolerance = 0;  // 0: a fixed-sample bake
-  bool samplingOnly = false;
-  uint64_t maxSamples = kDefaultMaxSamples;
+  int size = 0;  // 0: the per-table defaults
+  SamplingOptions sampling;
   bool errorMap = false;
   int threads = 0;  // 0: all cores
   std::string formats = "exr,bin,header";
@@ -35,8 +30,6 @@ NdfKind ParseNdf(const std::string &name);
 SmithForm ParseSmith(const std::string &name);
 FresnelModel ParseFresnel(const std::string &name);
 TableKind ParseTable(const std::string &name);
-Estimator EstimatorNamed(const std::string &name);
-std::vector<std::string> EstimatorNames();
 
 void SetupBakeCommand(CLI::App &app, BakeOptions &options);
 

@@ -4,6 +4,8 @@
 #include <iostream>
 
 #include "bake_command.h"
+#include "check_command.h"
+#include "eval_command.h"
 #include "lutbake/bake.h"
 #include "report_command.h"
 
@@ -26,12 +28,22 @@ int main(int argc, char **argv) {
   app.require_subcommand(1);
   app.footer(
       "Example:\n  lutbake bake --out out          # the four default tables\n"
+      "  lutbake check out              # validate a bake without trusting it\n"
+      "  lutbake eval --table E --mu 0.5 --roughness 0.3\n"
       "  lutbake report --out report    # error against time of every estimator\n"
-      "Run 'lutbake bake --help' or 'lutbake report --help' for their options.");
+      "Run 'lutbake COMMAND --help' (bake, check, eval, report) for their options.");
   lutbake::cli::BakeOptions bakeOptions;
   CLI::App *bake =
       app.add_subcommand("bake", "Bake tables into a directory (EXR, .bin, C++ header)");
   lutbake::cli::SetupBakeCommand(*bake, bakeOptions);
+  lutbake::cli::EvalOptions evalOptions;
+  CLI::App *eval = app.add_subcommand(
+      "eval", "Evaluate any table at any points, with the error bound of each value");
+  lutbake::cli::SetupEvalCommand(*eval, evalOptions);
+  lutbake::cli::CheckCommandOptions checkOptions;
+  CLI::App *check = app.add_subcommand(
+      "check", "Validate a baked directory against the quadrature, identities and the furnace");
+  lutbake::cli::SetupCheckCommand(*check, checkOptions);
   lutbake::cli::ReportOptions reportOptions;
   CLI::App *report = app.add_subcommand(
       "report", "Measure real error against run time for every estimator (csv, md, svg)");
@@ -50,11 +62,18 @@ int main(int argc, char **argv) {
     return app.exit(e);
   } catch (const CLI::ParseError &e) {
     std::cerr << "lutbake: " << e.what() << "\n";
-    std::cerr << "Run 'lutbake --help' or 'lutbake bake --help' for the accepted options.\n";
+    // Name the subcommand being parsed, if any, in the pointer to its help.
+    std::string command = "COMMAND";
+    for (const CLI::App *sub : app.get_subcommands({}))
+      for (int i = 1; i < argc; ++i)
+        if (argv[i] == sub->get_name()) command = sub->get_name();
+    std::cerr << "Run 'lutbake " << command << " --help' for the accepted options.\n";
     return 2;
   }
   try {
     if (bake->parsed()) return lutbake::cli::RunBake(bakeOptions, commandLine);
+    if (eval->parsed()) return lutbake::cli::RunEval(evalOptions);
+    if (check->parsed()) return lutbake::cli::RunCheck(checkOptions);
     if (report->parsed()) return lutbake::cli::RunReport(reportOptions);
   } catch (const std::exception &e) {
     std::cerr << "lutbake: " << e.what() << "\n";

@@ -14,6 +14,7 @@
 #include "lutbake/atomic_output.h"
 #include "lutbake/report.h"
 #include "lutbake/writer.h"
+#include "sampling_options.h"
 
 namespace lutbake::cli {
 

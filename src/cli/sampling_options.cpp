@@ -1,0 +1,90 @@
+#include "sampling_options.h"
+
+#include <iostream>
+
+#include "cli_util.h"
+
+namespace lutbake::cli {
+
+namespace {
+constexpr uint64_t kMaxSamples = uint64_t{1} << 30;
+}  // namespace
+
+std::vector<std::string> EstimatorNames() {
+  std::vector<std::string> names;
+  for (Estimator e : kAllEstimators) names.emplace_back(ToString(e));
+  return names;
+}
+
+Estimator EstimatorNamed(const std::string &name) {
+  Estimator e = Estimator::kVisibleNormal;
+  ParseEstimator(name, &e);
+  return e;
+}
+
+void AddSamplingOptions(CLI::App &app, SamplingOptions &o, const std::string &unit) {
+  app.add_option("--estimator", o.estimator,
+                 "vndf: visible-normal sampling, scrambled Sobol points; vndf-random: the same "
+                 "with independent random points; ndf: NDF sampling; cosine, uniform: light "
+                 "directions cosine-weighted or uniform (baselines); quadrature: deterministic "
+                 "adaptive Gauss-Kronrod")
+      ->type_name("NAME")
+      ->check(OneOf(EstimatorNames()));
+  app.add_option("--samples", o.samples,
+                 "Samples per " + unit +
+                     " of E and dfg (Eavg: 32x as many); at least 2 so that the error can be "
+                     "estimated. Default 65536; with --tolerance, the first round (default 1024)")
+      ->type_name("N")
+      ->check(InRange<uint64_t>(2, kMaxSamples, "samples per " + unit));
+  app.add_option("--replicates", o.replicates,
+                 "Independent scrambles per " + unit +
+                     " whose spread gives the error bound (default 4; 8 with --tolerance)")
+      ->type_name("K")
+      ->check(InRange(2, 64, "replicates"));
+  app.add_option("--tolerance", o.tolerance,
+                 "Refine every " + unit +
+                     " of E, Eavg and dfg (in rounds that double the samples) until its error "
+                     "bound is at most EPS; where the quadrature is cheaper it is used instead")
+      ->type_name("EPS")
+      ->check(RealInRange(1e-9, 0.1, "a number from 1e-9 to 0.1"));
+  app.add_flag("--sampling-only", o.samplingOnly,
+               "With --tolerance: never switch to the quadrature; sampling continues up to "
+               "--max-samples");
+  app.add_option("--max-samples", o.maxSamples,
+                 "With --tolerance --sampling-only: most samples per " + unit + " (default 2^26)")
+      ->type_name("N")
+      ->check(InRange<uint64_t>(2, uint64_t{1} << 36, "samples per " + unit));
+  app.add_option("--seed", o.seed, "Seed of the point-set scrambling")
+      ->capture_default_str()
+      ->type_name("S")
+      ->check(InRange<uint64_t>(0, UINT64_MAX, "(any unsigned 64-bit integer)"));
+}
+
+int ApplySamplingOptions(const std::string &command, const SamplingOptions &o,
+                         Estimator defaultEstimator, BakeSettings *s) {
+  const bool tolerance = o.tolerance > 0.0;
+  s->estimator = defaultEstimator;
+  if (!o.estimator.empty()) s->estimator = EstimatorNamed(o.estimator);
+  s->tolerance = o.tolerance;
+  s->samples = o.samples ? o.samples : tolerance ? kToleranceStartSamples : kDefaultSamples;
+  s->replicates = o.replicates ? o.replicates
+                  : tolerance  ? kToleranceReplicates
+                               : kDefaultReplicates;
+  s->allowQuadratureSwitch = !o.samplingOnly;
+  s->maxSamples = o.maxSamples;
+  s->seed = o.seed;
+  if (!tolerance && (o.samplingOnly || o.maxSamples != kDefaultMaxSamples)) {
+    std::cerr << "lutbake " << command
+              << ": --sampling-only and --max-samples apply only with --tolerance\n";
+    return 2;
+  }
+  if (s->estimator == Estimator::kQuadrature && (o.samples || o.replicates || o.samplingOnly)) {
+    std::cerr << "lutbake " << command
+              << ": --samples, --replicates and --sampling-only apply to the sampled estimators, "
+                 "not to --estimator quadrature\n";
+    return 2;
+  }
+  return 0;
+}
+
+}  // namespace lutbake::cli

@@ -1,0 +1,37 @@
+// The options that choose how a point or texel is integrated (estimator,
+// samples, replicates, tolerance, seed), shared by `bake` and `eval`.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lutbake/bake.h"
+
+namespace lutbake::cli {
+
+struct SamplingOptions {
+  std::string estimator;  // empty: the command's default
+  uint64_t samples = 0;   // 0: kDefaultSamples, or kToleranceStartSamples with --tolerance
+  uint64_t seed = 0;
+  int replicates = 0;    // 0: kDefaultReplicates, or kToleranceReplicates with --tolerance
+  double tolerance = 0;  // 0: a fixed number of samples
+  bool samplingOnly = false;
+  uint64_t maxSamples = kDefaultMaxSamples;
+};
+
+// Every estimator's name, and the estimator of a (validated) name.
+std::vector<std::string> EstimatorNames();
+Estimator EstimatorNamed(const std::string &name);
+
+// `unit` names what gets the samples in the help texts: "texel" or "point".
+void AddSamplingOptions(CLI::App &app, SamplingOptions &options, const std::string &unit);
+
+// Copies the options into `settings`, with `defaultEstimator` where
+// --estimator was not given. Returns 0, or 2 after printing
+// "lutbake COMMAND: ..." for a combination that makes no sense.
+int ApplySamplingOptions(const std::string &command, const SamplingOptions &options,
+                         Estimator defaultEstimator, BakeSettings *settings);
+
+}  // namespace lutbake::cli
