@@ -14,6 +14,7 @@
 #include "lutbake/fresnel.h"
 #include "lutbake/ndf.h"
 #include "lutbake/reference_integrator.h"
+#include "reference_row.h"
 
 namespace lutbake {
 namespace {
@@ -80,16 +81,8 @@ TEST(ExtremeGrid, QuadratureMatchesIndependentLimitSequences) {
   ASSERT_EQ(rows.size(), 132u);
   std::vector<double> worst(rows.size(), 0.0);
   tbb::parallel_for(size_t(0), rows.size(), [&](size_t i) {
-    const test::CsvRow &row = rows[i];
-    const Ndf ndf{row.Text("ndf") == "beckmann" ? NdfKind::kBeckmann : NdfKind::kGgx,
-                  row.Number("alpha")};
-    const double mu = row.Number("mu");
-    const ReferenceAlbedo hc = IntegrateReferenceAlbedo(ndf, SmithForm::kCorrelated, mu);
-    const ReferenceAlbedo sep = IntegrateReferenceAlbedo(ndf, SmithForm::kSeparable, mu);
-    worst[i] =
-        std::max({std::abs(hc.E - row.Number("E_hc")), std::abs(hc.A - row.Number("A_hc")),
-                  std::abs(hc.B - row.Number("B_hc")), std::abs(sep.E - row.Number("E_sep")),
-                  std::abs(sep.A - row.Number("A_sep")), std::abs(sep.B - row.Number("B_sep"))});
+    worst[i] = test::WorstDifferenceFromRow(
+        rows[i], rows[i].Text("ndf") == "beckmann" ? NdfKind::kBeckmann : NdfKind::kGgx);
   });
   for (size_t i = 0; i < rows.size(); ++i)
     EXPECT_LE(worst[i], 1e-10) << rows[i].Text("ndf") << " mu=" << rows[i].Text("mu")

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "csv.h"
+#include "reference_row.h"
 
 namespace lutbake {
 namespace {
@@ -20,17 +21,8 @@ void CheckAgainstTable(NdfKind kind, const std::string &file) {
   const std::vector<test::CsvRow> rows = test::ReadCsv(test::DataPath(file));
   ASSERT_EQ(rows.size(), 290u);
   std::vector<double> worst(rows.size(), 0.0);
-  tbb::parallel_for(size_t(0), rows.size(), [&](size_t i) {
-    const test::CsvRow &row = rows[i];
-    const Ndf ndf{kind, row.Number("alpha")};
-    const double mu = row.Number("mu");
-    const ReferenceAlbedo hc = IntegrateReferenceAlbedo(ndf, SmithForm::kCorrelated, mu);
-    const ReferenceAlbedo sep = IntegrateReferenceAlbedo(ndf, SmithForm::kSeparable, mu);
-    worst[i] =
-        std::max({std::abs(hc.E - row.Number("E_hc")), std::abs(hc.A - row.Number("A_hc")),
-                  std::abs(hc.B - row.Number("B_hc")), std::abs(sep.E - row.Number("E_sep")),
-                  std::abs(sep.A - row.Number("A_sep")), std::abs(sep.B - row.Number("B_sep"))});
-  });
+  tbb::parallel_for(size_t(0), rows.size(),
+                    [&](size_t i) { worst[i] = test::WorstDifferenceFromRow(rows[i], kind); });
   for (size_t i = 0; i < rows.size(); ++i)
     EXPECT_LE(worst[i], 1e-10) << file << " mu=" << rows[i].Text("mu")
                                << " alpha=" << rows[i].Text("alpha");

@@ -21,7 +21,6 @@ namespace lutbake::cli {
 namespace {
 
 constexpr int kMaxSize = 4096;
-constexpr int kMaxThreads = 1024;
 
 }  // namespace
 
@@ -63,10 +62,7 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
   AddSamplingOptions(app, o.sampling, "texel");
   app.add_flag("--error-map", o.errorMap,
                "Also write T.err.exr: the per-texel error bound, same layout and channels as T");
-  app.add_option("--threads", o.threads,
-                 "Worker threads (default: all cores); output does not depend on it")
-      ->type_name("N")
-      ->check(InRange(1, kMaxThreads, "threads"));
+  AddThreadsOption(app, o.threads, "; output does not depend on it");
   app.add_option("--format", o.formats, "Files to write per table: T.exr, T.bin, T.h")
       ->capture_default_str()
       ->check(ListOf({"exr", "bin", "header"}));

@@ -43,13 +43,8 @@ void SetupCheckCommand(CLI::App &app, CheckCommandOptions &o) {
       ->capture_default_str()
       ->type_name("N")
       ->check(InRange(2, 4097, "points per axis"));
-  app.add_option("--seed", o.seed, "Seed of the random points")
-      ->capture_default_str()
-      ->type_name("S")
-      ->check(InRange<uint64_t>(0, UINT64_MAX, "(any unsigned 64-bit integer)"));
-  app.add_option("--threads", o.threads, "Worker threads (default: all cores)")
-      ->type_name("N")
-      ->check(InRange(1, 1024, "threads"));
+  AddSeedOption(app, o.seed, "Seed of the random points");
+  AddThreadsOption(app, o.threads);
   app.add_flag("--json", o.json, "Print the results as one JSON object on stdout");
   app.footer(
       "Checks metadata, formats, NaN/Inf, ranges, every texel against the quadrature, random\n"

@@ -141,6 +141,19 @@ void AddModelOptions(CLI::App &app, std::string &ndf, std::string &smith) {
       ->check(OneOf({"correlated", "separable"}));
 }
 
+void AddSeedOption(CLI::App &app, uint64_t &seed, const std::string &seedHelp) {
+  app.add_option("--seed", seed, seedHelp)
+      ->capture_default_str()
+      ->type_name("S")
+      ->check(InRange<uint64_t>(0, UINT64_MAX, "(any unsigned 64-bit integer)"));
+}
+
+void AddThreadsOption(CLI::App &app, int &threads, const std::string &threadsHelp) {
+  app.add_option("--threads", threads, "Worker threads (default: all cores)" + threadsHelp)
+      ->type_name("N")
+      ->check(InRange(1, 1024, "threads"));
+}
+
 int ThreadCount(int requested) {
   return requested > 0 ? requested
                        : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));

@@ -52,6 +52,12 @@ int PrepareOutputOrComplain(const std::string &command, const std::string &dir, 
 // subcommands that integrate the microfacet BRDF.
 void AddModelOptions(CLI::App &app, std::string &ndf, std::string &smith);
 
+// --seed S (any unsigned 64-bit integer) and --threads N (1 to 1024, default
+// all cores), as every subcommand spells them; `seedHelp` says what it seeds,
+// `threadsHelp` is appended to the --threads help.
+void AddSeedOption(CLI::App &app, uint64_t &seed, const std::string &seedHelp);
+void AddThreadsOption(CLI::App &app, int &threads, const std::string &threadsHelp = "");
+
 // The worker threads to use: `requested`, or all cores when it is 0.
 int ThreadCount(int requested);
 

@@ -104,9 +104,7 @@ void SetupEvalCommand(CLI::App &app, EvalOptions &o) {
       ->check(RealList({0.0, 1e3, "comma-separated numbers from 0 to 1000"}));
   AddModelOptions(app, o.ndf, o.smith);
   AddSamplingOptions(app, o.sampling, "point");
-  app.add_option("--threads", o.threads, "Worker threads (default: all cores)")
-      ->type_name("N")
-      ->check(InRange(1, 1024, "threads"));
+  AddThreadsOption(app, o.threads);
   app.add_flag("--json", o.json,
                "One JSON object per point and line: table, the coordinates, value, error "
                "(value and error are [A, B] for dfg), estimator, samples");

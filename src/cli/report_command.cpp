@@ -52,13 +52,8 @@ void SetupReportCommand(CLI::App &app, ReportOptions &o) {
       ->type_name("N")
       ->check(InRange(1, 256, "texels per axis"));
   AddModelOptions(app, o.ndf, o.smith);
-  app.add_option("--seed", o.seed, "Seed of the point sets")
-      ->capture_default_str()
-      ->type_name("S")
-      ->check(InRange<uint64_t>(0, UINT64_MAX, "(any unsigned 64-bit integer)"));
-  app.add_option("--threads", o.threads, "Worker threads (default: all cores)")
-      ->type_name("N")
-      ->check(InRange(1, 1024, "threads"));
+  AddSeedOption(app, o.seed, "Seed of the point sets");
+  AddThreadsOption(app, o.threads);
   app.footer("Example:\n  lutbake report --out report --budget 60");
 }
 

@@ -54,10 +54,7 @@ void AddSamplingOptions(CLI::App &app, SamplingOptions &o, const std::string &un
                  "With --tolerance --sampling-only: most samples per " + unit + " (default 2^26)")
       ->type_name("N")
       ->check(InRange<uint64_t>(2, uint64_t{1} << 36, "samples per " + unit));
-  app.add_option("--seed", o.seed, "Seed of the point-set scrambling")
-      ->capture_default_str()
-      ->type_name("S")
-      ->check(InRange<uint64_t>(0, UINT64_MAX, "(any unsigned 64-bit integer)"));
+  AddSeedOption(app, o.seed, "Seed of the point-set scrambling");
 }
 
 int ApplySamplingOptions(const std::string &command, const SamplingOptions &o,
