@@ -106,6 +106,7 @@ TexelResult QuadratureAlbedo(bool split, const BakeSettings &s, const Ndf &ndf, 
   out.error[0] = out.error[1] = bound;
   out.evaluations = static_cast<uint64_t>(r.evaluations);
   out.quadrature = true;
+  out.exact = ndf.alpha == 0.0;
   return out;
 }
 
@@ -118,6 +119,7 @@ TexelResult QuadratureAverage(const BakeSettings &s, const Ndf &ndf) {
   out.error[0] = ndf.alpha == 0.0 ? 0.0 : kQuadratureErrorFactor * r.error + kQuadratureErrorFloor;
   out.evaluations = r.evaluations;
   out.quadrature = true;
+  out.exact = ndf.alpha == 0.0;
   return out;
 }
 

@@ -775,6 +775,7 @@ class Checker {
     // The roughness range both tables cover.
     const double rLo = std::max(te.y.min, ta.x.min), rHi = std::min(te.y.max, ta.x.max);
     const double errE = e->statedErrorMax, errA = a->statedErrorMax;
+    const double refErrorE = *std::max_element(e->refError.begin(), e->refError.end());
     double worst = 0.0, worstRef = 0.0, worstExcess = -1.0, excessValue = 0, excessAllowed = 0;
     std::vector<std::pair<std::string, double>> at, atRef, atExcess;
     int notJudged = 0, undefined = 0;
@@ -785,7 +786,7 @@ class Checker {
       const double mix = LookupMuAverage(te, te.values, r, 0);
       const double mixRef = LookupMuAverage(te, e->ref, r, 0);
       const double epsA = errA + FloatRounding(avg) + Lookup(ta, a->refError, r, 0.0, 0);
-      const double epsE = errE + FloatRounding(1.0) + 1e-9;
+      const double epsE = errE + FloatRounding(1.0) + refErrorE;
       // E_avg = 1 (it rounds there as r -> 0 in float): f_ms is 0 / 0 and an
       // engine must guard the division. Reported, not judged.
       if (!(1.0 - avg > 0.0) || !(1.0 - avgRef > 0.0)) {

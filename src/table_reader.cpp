@@ -47,10 +47,10 @@ Table ReadExrTable(const std::string &path) {
       throw IoError(path +
                     ": attribute axisX missing or not of the form "
                     "'name linear [min, max], N texels'");
-    if (axisY && ParseAxisDescription(*axisY, &table.y)) {
-    } else if (height == 1) {
-      table.y = Axis{"", 0.0, 1.0, 1};
-    } else {
+    const bool axisYParsed = axisY && ParseAxisDescription(*axisY, &table.y);
+    if (!axisYParsed && height == 1) {
+      table.y = Axis{"", 0.0, 1.0, 1};  // a 1D table: axisY reads "none (1D table)"
+    } else if (!axisYParsed) {
       throw IoError(path + ": attribute axisY missing or malformed for a 2D image");
     }
     if (table.x.count != width || table.y.count != height)

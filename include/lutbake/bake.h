@@ -135,6 +135,7 @@ struct PointValue {
   uint64_t samples = 0;
   uint64_t evaluations = 0;
   bool quadrature = false;
+  bool exact = false;  // a closed form (the mirror, alpha = 0): error 0 by construction
 };
 
 // The seed of a sampled point: a hash of the table, the point's coordinates

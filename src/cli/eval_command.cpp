@@ -65,11 +65,11 @@ struct Point {
   PointValue result;
 };
 
-// "exact" for the closed forms (a mirror, Schlick's F_avg), else the
+// "exact" for the closed form of the mirror (alpha = 0), else the
 // estimator that produced the value (a tolerance run may switch a point to
 // the quadrature).
 std::string EstimatorUsed(const PointValue &v, const BakeSettings &s) {
-  if (v.quadrature && v.error[0] == 0.0 && v.error[1] == 0.0 && v.evaluations == 0) return "exact";
+  if (v.exact) return "exact";
   return v.quadrature ? "quadrature" : std::string(ToString(s.estimator));
 }
 
