@@ -42,21 +42,21 @@ bool ParseEstimator(std::string_view name, Estimator *estimator) {
   return false;
 }
 
-Axis MuAxis(int count) { return {"mu", 0.0, 1.0, count}; }
-Axis RoughnessAxis(int count) { return {"perceptualRoughness", 0.0, 1.0, count}; }
+Axis MuAxis(int count) { return LinearAxis("mu", 0.0, 1.0, count); }
+Axis RoughnessAxis(int count) { return LinearAxis("perceptualRoughness", 0.0, 1.0, count); }
 
 void FresnelAxes(FresnelModel model, int count, Axis *x, Axis *y) {
-  *y = Axis{"", 0.0, 1.0, 1};
+  *y = LinearAxis("", 0.0, 1.0, 1);
   switch (model) {
-    case FresnelModel::kSchlick: *x = {"F0", 0.0, 1.0, count}; break;
+    case FresnelModel::kSchlick: *x = LinearAxis("F0", 0.0, 1.0, count); break;
     // Relative IOR from 1 (no interface) to 3: every common dielectric,
     // diamond (2.42) included, lies inside.
-    case FresnelModel::kDielectric: *x = {"eta", 1.0, 3.0, count}; break;
+    case FresnelModel::kDielectric: *x = LinearAxis("eta", 1.0, 3.0, count); break;
     // Complex IOR eta + i k: metals across the visible spectrum have
     // eta in (0, 4) and k in (0, 10) (gold, copper, aluminium, iron, ...).
     case FresnelModel::kConductor:
-      *x = {"eta", 0.0, 4.0, count};
-      *y = {"k", 0.0, 10.0, count};
+      *x = LinearAxis("eta", 0.0, 4.0, count);
+      *y = LinearAxis("k", 0.0, 10.0, count);
       break;
   }
 }
@@ -272,26 +272,38 @@ PointValue EvaluateFresnelAverage(FresnelModel model, double x, double y) {
   return out;
 }
 
+void DefaultAxes(TableKind kind, const BakeSettings &s, Axis *x, Axis *y) {
+  switch (kind) {
+    case TableKind::kE:
+      *x = MuAxis(s.sizeE);
+      *y = RoughnessAxis(s.sizeE);
+      break;
+    case TableKind::kDfg:
+      *x = MuAxis(s.sizeDfg);
+      *y = RoughnessAxis(s.sizeDfg);
+      break;
+    case TableKind::kEavg:
+      *x = RoughnessAxis(s.sizeEavg);
+      *y = LinearAxis("", 0.0, 1.0, 1);
+      break;
+    case TableKind::kFavg: FresnelAxes(s.fresnel, s.sizeFavg, x, y); break;
+  }
+}
+
 Table BakeTable(TableKind kind, const BakeSettings &s, const ProgressFn &progress,
                 BakeStats *statsOut) {
+  Axis x, y;
+  DefaultAxes(kind, s, &x, &y);
+  return BakeTableOn(kind, s, x, y, progress, statsOut);
+}
+
+Table BakeTableOn(TableKind kind, const BakeSettings &s, const Axis &x, const Axis &y,
+                  const ProgressFn &progress, BakeStats *statsOut) {
   const auto start = std::chrono::steady_clock::now();
   Table table;
   table.kind = kind;
-  switch (kind) {
-    case TableKind::kE:
-      table.x = MuAxis(s.sizeE);
-      table.y = RoughnessAxis(s.sizeE);
-      break;
-    case TableKind::kDfg:
-      table.x = MuAxis(s.sizeDfg);
-      table.y = RoughnessAxis(s.sizeDfg);
-      break;
-    case TableKind::kEavg:
-      table.x = RoughnessAxis(s.sizeEavg);
-      table.y = Axis{"", 0.0, 1.0, 1};
-      break;
-    case TableKind::kFavg: FresnelAxes(s.fresnel, s.sizeFavg, &table.x, &table.y); break;
-  }
+  table.x = x;
+  table.y = y;
   table.channels = kind == TableKind::kDfg ? 2 : 1;
   table.channelNames =
       kind == TableKind::kDfg ? std::vector<std::string>{"R", "G"} : std::vector<std::string>{"Y"};
@@ -369,9 +381,14 @@ Table BakeTable(TableKind kind, const BakeSettings &s, const ProgressFn &progres
   m.emplace_back("axisX", DescribeAxis(table.x));
   m.emplace_back("axisY", table.is2D() ? DescribeAxis(table.y) : "none (1D table)");
   m.emplace_back("alpha", albedo ? "alpha = perceptualRoughness^2" : "n/a");
-  m.emplace_back("texelConvention",
-                 "texel i of N holds the value at u = (i + 0.5) / N, "
-                 "mapped linearly onto [min, max]; y = 0 first");
+  std::string convention =
+      "texel i of N holds the value at u = (i + 0.5) / N, mapped linearly onto [min, max]; "
+      "y = 0 first";
+  if (table.x.listed() || table.y.listed())
+    convention +=
+        "; an axis described as 'values [...]' holds texel i at exactly its i-th value, and "
+        "lookups interpolate linearly in that value between neighbouring texels";
+  m.emplace_back("texelConvention", convention);
   m.emplace_back("channelLayout", kind == TableKind::kDfg ? "R = A (scale), G = B (bias)"
                                                           : "Y = " + std::string(TableName(kind)));
   std::string estimatorText = "adaptive Gauss-Kronrod quadrature";

@@ -1,3 +1,4 @@
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -32,7 +33,7 @@ void PutAxis(std::string &out, const Axis &axis, bool present) {
   PutF64(out, present ? axis.min : 0.0);
   PutF64(out, present ? axis.max : 0.0);
   PutU32(out, static_cast<uint32_t>(axis.count));
-  PutU32(out, 0);  // mapping: linear, texel centres
+  PutU32(out, present && axis.listed() ? 1 : 0);  // mapping: 0 linear, 1 listed nodes
 }
 
 uint32_t GetU32(const std::string &in, size_t at) {
@@ -64,6 +65,8 @@ Axis GetAxis(const std::string &in, size_t at) {
   return axis;
 }
 
+uint32_t GetMapping(const std::string &in, size_t at) { return GetU32(in, at + 44); }
+
 class BinaryWriter final : public TableWriter {
  public:
   const char *formatName() const override { return "bin"; }
@@ -71,7 +74,11 @@ class BinaryWriter final : public TableWriter {
   void Write(const Table &table, const std::string &path, const WriteOptions &) const override {
     std::string metadata;
     for (const auto &[key, value] : table.metadata) metadata += key + "=" + value + "\n";
-    const size_t dataOffset = (kFixedHeaderBytes + metadata.size() + 7) / 8 * 8;
+    std::string nodes;  // the node values of listed axes, x first
+    for (const Axis *axis : {&table.x, &table.y})
+      if (axis->listed() && (axis == &table.x || table.is2D()))
+        for (double v : axis->nodes) PutF64(nodes, v);
+    const size_t dataOffset = (kFixedHeaderBytes + metadata.size() + nodes.size() + 7) / 8 * 8;
     std::string out;
     out.append(kBinaryMagic, sizeof kBinaryMagic);
     PutU32(out, kBinaryVersion);
@@ -86,6 +93,7 @@ class BinaryWriter final : public TableWriter {
     PutAxis(out, table.y, table.is2D());
     PutU32(out, static_cast<uint32_t>(metadata.size()));
     out += metadata;
+    out += nodes;
     out.resize(dataOffset, '\0');
     for (double v : table.values) PutF32(out, static_cast<float>(v));
     for (double e : table.errors) PutF32(out, static_cast<float>(e));
@@ -127,19 +135,41 @@ Table ReadBinaryTable(const std::string &path) {
   table.x = GetAxis(in, 40);
   table.y = GetAxis(in, 88);
   if (dims == 1) {
-    table.y = Axis{"", 0.0, 1.0, 1};
+    table.y = LinearAxis("", 0.0, 1.0, 1);
   }
   constexpr uint32_t kMaxCount = 1u << 16;
   if (width == 0 || height == 0 || width > kMaxCount || height > kMaxCount ||
       static_cast<uint32_t>(table.x.count) != width ||
       static_cast<uint32_t>(table.y.count) != height || (dims == 1 && height != 1))
     throw IoError(path + ": texel counts disagree with the axes or exceed 65536");
-  if (!(table.x.max > table.x.min) || (dims == 2 && !(table.y.max > table.y.min)))
-    throw IoError(path + ": an axis range is empty or not a number");
   const size_t metadataLength = GetU32(in, 136);
   if (dataOffset % 8 != 0 || dataOffset > in.size() ||
       kFixedHeaderBytes + metadataLength > dataOffset)
     throw IoError(path + ": bad data offset or metadata length");
+  // Listed axes: their node values follow the metadata, x's first.
+  size_t nodesAt = kFixedHeaderBytes + metadataLength;
+  const auto readAxis = [&](Axis *axis, size_t headerAt, const char *which) {
+    const uint32_t mapping = GetMapping(in, headerAt);
+    if (mapping == 0) {
+      if (!(axis->max > axis->min))
+        throw IoError(path + ": axis " + which + " has an empty range or one that is not a number");
+      return;
+    }
+    if (mapping != 1) throw IoError(path + ": axis " + which + " has an unknown mapping");
+    const size_t bytes = 8 * static_cast<size_t>(axis->count);
+    if (nodesAt + bytes > dataOffset)
+      throw IoError(path + ": the node values of axis " + which + " run past the data offset");
+    std::vector<double> nodes;
+    for (int i = 0; i < axis->count; ++i) {
+      nodes.push_back(GetF64(in, nodesAt + 8 * static_cast<size_t>(i)));
+      if (!std::isfinite(nodes.back()) || (i > 0 && !(nodes[i] > nodes[i - 1])))
+        throw IoError(path + ": the node values of axis " + which + " are not increasing");
+    }
+    nodesAt += bytes;
+    *axis = ListedAxis(axis->name, std::move(nodes));
+  };
+  readAxis(&table.x, 40, "x");
+  if (dims == 2) readAxis(&table.y, 88, "y");
   std::istringstream lines(in.substr(kFixedHeaderBytes, metadataLength));
   for (std::string line; std::getline(lines, line);) {
     const size_t eq = line.find('=');

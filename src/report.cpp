@@ -103,7 +103,7 @@ std::vector<ReportRow> RunReport(const ReportSettings &s, const ReportProgressFn
     // The layout (axes) of the report table, as BakeTable makes it.
     Table layout;
     layout.x = kind == TableKind::kEavg ? RoughnessAxis(s.size) : MuAxis(s.size);
-    layout.y = kind == TableKind::kEavg ? Axis{"", 0.0, 1.0, 1} : RoughnessAxis(s.size);
+    layout.y = kind == TableKind::kEavg ? LinearAxis("", 0.0, 1.0, 1) : RoughnessAxis(s.size);
     const std::vector<std::array<double, 2>> ref = ReferenceValues(s, kind, layout);
     for (Estimator estimator : s.estimators) {
       BakeSettings b = BaseSettings(s);

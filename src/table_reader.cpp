@@ -49,7 +49,7 @@ Table ReadExrTable(const std::string &path) {
                     "'name linear [min, max], N texels'");
     const bool axisYParsed = axisY && ParseAxisDescription(*axisY, &table.y);
     if (!axisYParsed && height == 1) {
-      table.y = Axis{"", 0.0, 1.0, 1};  // a 1D table: axisY reads "none (1D table)"
+      table.y = LinearAxis("", 0.0, 1.0, 1);  // a 1D table: axisY reads "none (1D table)"
     } else if (!axisYParsed) {
       throw IoError(path + ": attribute axisY missing or malformed for a 2D image");
     }

@@ -215,8 +215,8 @@ TEST(Check, CommandLineExitsAndNamesTheFailure) {
 
 TEST(Lookup, TexelCentresClampingAndTheMuIntegral) {
   Table t;
-  t.x = Axis{"mu", 0.0, 1.0, 4};
-  t.y = Axis{"perceptualRoughness", 0.0, 1.0, 3};
+  t.x = LinearAxis("mu", 0.0, 1.0, 4);
+  t.y = LinearAxis("perceptualRoughness", 0.0, 1.0, 3);
   t.channels = 1;
   // v = 2 + 3 mu + 5 r at the centres: bilinear reproduces it exactly
   // between the centres.

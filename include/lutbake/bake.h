@@ -118,8 +118,16 @@ Axis RoughnessAxis(int count);
 Axis MuAxis(int count);
 void FresnelAxes(FresnelModel model, int count, Axis *x, Axis *y);
 
+// The axes a table has by default (SPEC sections 2 and 3): mu and perceptual
+// roughness over [0, 1], the Fresnel axes of FresnelAxes.
+void DefaultAxes(TableKind kind, const BakeSettings &settings, Axis *x, Axis *y);
+
 Table BakeTable(TableKind kind, const BakeSettings &settings, const ProgressFn &progress = {},
                 BakeStats *stats = nullptr);
+// The same on given axes (a bake plan's narrowed or listed roughness, its
+// IORs): x and y as DefaultAxes would give them, in kind and order.
+Table BakeTableOn(TableKind kind, const BakeSettings &settings, const Axis &x, const Axis &y,
+                  const ProgressFn &progress = {}, BakeStats *stats = nullptr);
 
 // The smallest non-zero alpha the albedo integrators accept (perceptual
 // roughness 1e-12). Far below it alpha^2 leaves the normal doubles (alpha <

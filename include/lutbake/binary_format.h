@@ -14,10 +14,15 @@
 //   36     4     u32       flags (bit 0: an error block follows the values)
 //   40     48    axis x    char[24] name (UTF-8, NUL-padded), f64 min, f64 max,
 //                          u32 count, u32 mapping (0 = linear, texel centres:
-//                          texel i at min + (max - min) (i + 0.5) / count)
+//                          texel i at min + (max - min) (i + 0.5) / count;
+//                          1 = listed: texel i at the i-th of the axis's
+//                          node values, see below)
 //   88     48    axis y    same; name empty for a 1D table
 //   136    4     u32       metadata length M in bytes
 //   140    M     char[M]   metadata, UTF-8 lines "key=value\n" (EXR attributes)
+//   140+M  8 n   f64[n]    node values of axis x when its mapping is 1 (n = its
+//                          count, increasing), then those of axis y when its
+//                          mapping is 1; nothing for linear axes
 //   ...          zero padding up to D
 //   D      4 W H C         values, float32, [y][x][channel], y = 0 first
 //   D+4WHC 4 W H C         error bounds, same layout (when flags bit 0 is set)

@@ -27,15 +27,40 @@ struct Axis {
   double min = 0.0;
   double max = 1.0;
   int count = 1;
+  // A listed axis (bake plans): when not empty, texel i holds the value at
+  // exactly nodes[i] (strictly increasing; count = nodes.size(), min and max
+  // the first and last), and a lookup interpolates linearly in the axis
+  // value between neighbouring nodes. Empty: the linear texel-centre axis.
+  std::vector<double> nodes;
 
+  bool listed() const { return !nodes.empty(); }
   // Texel-centre convention: the value of texel i.
-  double TexelCenter(int i) const { return min + (max - min) * ((i + 0.5) / count); }
-  // The inverse: the continuous texel coordinate of a value (i at centres).
-  double TexelCoordinate(double value) const { return (value - min) / (max - min) * count - 0.5; }
+  double TexelCenter(int i) const {
+    return listed() ? nodes[static_cast<size_t>(i)] : min + (max - min) * ((i + 0.5) / count);
+  }
+  // The inverse: the continuous texel coordinate of a value (i at centres;
+  // a listed axis clamps to [0, count - 1], a linear one does not).
+  double TexelCoordinate(double value) const;
 };
+
+// A linear axis over [min, max] with `count` texels.
+inline Axis LinearAxis(std::string name, double min, double max, int count) {
+  Axis axis;
+  axis.name = std::move(name);
+  axis.min = min;
+  axis.max = max;
+  axis.count = count;
+  return axis;
+}
+// A listed axis at `nodes` (strictly increasing, not empty).
+Axis ListedAxis(std::string name, std::vector<double> nodes);
 
 struct Table {
   TableKind kind = TableKind::kE;
+  // The file stem and header identifier when it is not the kind's name: a
+  // bake plan that needs two variants of a table names them "E_beckmann",
+  // "Favg_conductor", ...
+  std::string name;
   Axis x;  // width: the first axis (mu, or the Fresnel parameter)
   Axis y;  // height: perceptual roughness, or the second Fresnel axis;
            // a 1D table has y.count = 1 and y.name empty
@@ -46,6 +71,7 @@ struct Table {
   // Ordered (key, value) pairs: table, ndf, smith, fresnel, estimator, ...
   std::vector<std::pair<std::string, std::string>> metadata;
 
+  std::string Name() const { return name.empty() ? TableName(kind) : name; }
   int width() const { return x.count; }
   int height() const { return y.count; }
   bool is2D() const { return !y.name.empty(); }
@@ -64,7 +90,8 @@ std::string FormatDouble(double v);
 
 // An axis in words, as the metadata key axisX / axisY holds it:
 //   "mu linear [0, 1], 32 texels"
-// and the parser of that text (false when it is not of that form).
+//   "perceptualRoughness values [0.25, 0.5], 2 texels"   (a listed axis)
+// and the parser of that text (false when it is not of either form).
 std::string DescribeAxis(const Axis &axis);
 bool ParseAxisDescription(const std::string &text, Axis *axis);
 

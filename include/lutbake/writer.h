@@ -38,6 +38,12 @@ std::unique_ptr<TableWriter> MakeExrWriter();
 std::unique_ptr<TableWriter> MakeBinaryWriter();
 std::unique_ptr<TableWriter> MakeCppHeaderWriter();
 
+// Favg.h for a bake plan whose compensated materials all use Schlick's
+// Fresnel: F_avg = 20/21 F0 + 1/21 F90 as inline functions (lookup_Favg(F0)
+// and favg_schlick(F0, F90)), no table. `metadata` goes into its comment.
+void WriteSchlickFavgHeader(const std::string &path, const WriteOptions &options,
+                            const std::vector<std::pair<std::string, std::string>> &metadata);
+
 // The writer for a --format name, or nullptr.
 std::unique_ptr<TableWriter> MakeWriter(const std::string &formatName);
 

@@ -3,6 +3,7 @@
 #include <tbb/global_control.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -14,6 +15,7 @@
 
 #include "cli_util.h"
 #include "lutbake/atomic_output.h"
+#include "lutbake/plan.h"
 #include "lutbake/writer.h"
 
 namespace lutbake::cli {
@@ -70,12 +72,43 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
       ->capture_default_str()
       ->check(CppNamespace());
   app.add_flag("--json", o.json, "Print the summary as one JSON object on stdout");
+  AddSceneOptions(app, o.scene);
+  app.add_flag("--skip-unsupported", o.skipUnsupported,
+               "With --scene: bake the plan although some materials use features lutbake does "
+               "not bake (they get no table)");
   app.footer(
       "Example:\n  lutbake bake --out out\n"
-      "  lutbake bake --out luts --tables E,Eavg --ndf beckmann --size 64 --format exr,header");
+      "  lutbake bake --out luts --tables E,Eavg --ndf beckmann --size 64 --format exr,header\n"
+      "  lutbake bake --out luts --scene car.gltf   # only what the scene needs (lutbake plan)");
 }
 
-int RunBake(const BakeOptions &o, const std::string &commandLine) {
+namespace {
+
+// One table to bake: its kind, settings and axes, the name of its files,
+// and what the plan adds to its metadata.
+struct BakeJob {
+  TableKind kind;
+  BakeSettings settings;
+  Axis x, y;
+  std::string name;
+  std::vector<std::pair<std::string, std::string>> metadata;
+};
+
+// Options that choose tables or models, which a plan decides instead.
+int PlanConflicts(CLI::App &app) {
+  for (const char *flag : {"--tables", "--ndf", "--smith", "--fresnel"})
+    if (app.count(flag) > 0) {
+      std::cerr << "lutbake bake: " << flag
+                << " cannot be combined with --scene or --manifest: the plan chooses the tables "
+                   "and their models (see lutbake plan)\n";
+      return 2;
+    }
+  return 0;
+}
+
+}  // namespace
+
+int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app) {
   BakeSettings settings;
   settings.ndf = ParseNdf(o.ndf);
   settings.smith = ParseSmith(o.smith);
@@ -88,8 +121,49 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
   const bool tolerance = settings.tolerance > 0.0;
   settings.commandLine = commandLine;
 
-  std::vector<TableKind> tables;
-  for (const std::string &name : SplitList(o.tables)) tables.push_back(ParseTable(name));
+  std::vector<BakeJob> jobs;
+  bool schlickFavgHeader = false;
+  std::vector<std::pair<std::string, std::string>> planMetadata;
+  if (o.scene.used()) {
+    if (const int status = PlanConflicts(app)) return status;
+    PlanOptions planOptions;
+    planOptions.sizeE = settings.sizeE;
+    planOptions.sizeEavg = settings.sizeEavg;
+    planOptions.sizeFavg = settings.sizeFavg;
+    planOptions.sizeDfg = settings.sizeDfg;
+    BakePlan plan;
+    if (const int status = MakePlanOrComplain("bake", o.scene, planOptions, &plan)) return status;
+    if (!plan.unsupported.empty() && !o.skipUnsupported) {
+      std::cerr << "lutbake bake: the scene uses features lutbake does not bake; nothing "
+                   "written:\n";
+      for (const UnsupportedFeature &u : plan.unsupported)
+        std::cerr << "  " << u.material << ": " << u.feature << "\n";
+      std::cerr << "Add --skip-unsupported to bake the rest of the plan without them.\n";
+      return 1;
+    }
+    if (plan.empty()) {
+      std::cerr << "lutbake bake: the plan needs no tables; nothing written.\n";
+      for (const OmittedTable &t : plan.omitted)
+        std::cerr << "  " << t.name << ": " << t.reason << "\n";
+      return 0;
+    }
+    std::string sources;
+    for (const auto *list : {&o.scene.scenes, &o.scene.manifests})
+      for (const std::string &path : *list) sources += (sources.empty() ? "" : ", ") + path;
+    planMetadata.emplace_back("planSources", sources);
+    for (const PlannedTable &t : plan.tables) {
+      BakeJob job{t.kind, PlannedSettings(t, settings), t.x, t.y, t.name, planMetadata};
+      job.metadata.emplace_back("planMaterials", JoinNames(t.materials));
+      jobs.push_back(job);
+    }
+    schlickFavgHeader = plan.schlickFavgFunction;
+  } else {
+    for (const std::string &name : SplitList(o.tables)) {
+      BakeJob job{ParseTable(name), settings, {}, {}, name, {}};
+      DefaultAxes(job.kind, settings, &job.x, &job.y);
+      jobs.push_back(job);
+    }
+  }
   std::vector<std::unique_ptr<TableWriter>> writers;
   for (const std::string &name : SplitList(o.formats)) writers.push_back(MakeWriter(name));
 
@@ -112,11 +186,13 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
     WriteOptions writeOptions;
     writeOptions.headerNamespace = o.headerNamespace;
     std::vector<std::string> unreached;
-    for (TableKind kind : tables) {
+    for (const BakeJob &job : jobs) {
       BakeStats stats;
-      const Table table = BakeTable(kind, settings, {}, &stats);
+      Table table = BakeTableOn(job.kind, job.settings, job.x, job.y, {}, &stats);
+      if (job.name != TableName(job.kind)) table.name = job.name;
+      table.metadata.insert(table.metadata.end(), job.metadata.begin(), job.metadata.end());
       nlohmann::ordered_json files = nlohmann::ordered_json::array();
-      const std::filesystem::path base = std::filesystem::path(o.outDir) / TableName(kind);
+      const std::filesystem::path base = std::filesystem::path(o.outDir) / job.name;
       for (const auto &writer : writers) {
         const std::string path = base.string() + writer->extension();
         writer->Write(table, output.Add(path), writeOptions);
@@ -133,16 +209,15 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
       std::snprintf(line, sizeof line,
                     "%-5s %4d x %-4d samples/texel mean %-9.4g max %-9llu quadrature texels %-6llu"
                     " %7.2f s  error max %.2e  rms %.2e\n",
-                    TableName(kind), table.width(), table.height(), meanSamples,
+                    job.name.c_str(), table.width(), table.height(), meanSamples,
                     static_cast<unsigned long long>(stats.maxTexelSamples),
                     static_cast<unsigned long long>(stats.quadratureTexels), stats.seconds,
                     table.MaxError(), table.RmsError());
       std::cerr << line;
       if (stats.unconverged > 0)
-        unreached.push_back(std::string(TableName(kind)) + " (" +
-                            std::to_string(stats.unconverged) + " texels)");
+        unreached.push_back(job.name + " (" + std::to_string(stats.unconverged) + " texels)");
       nlohmann::ordered_json entry;
-      entry["name"] = TableName(kind);
+      entry["name"] = job.name;
       entry["width"] = table.width();
       entry["height"] = table.height();
       entry["channels"] = table.channels;
@@ -157,6 +232,25 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
       entry["errorRms"] = table.RmsError();
       entry["files"] = files;
       summary["tables"].push_back(entry);
+    }
+    const bool headers = std::any_of(writers.begin(), writers.end(), [](const auto &w) {
+      return std::string(w->formatName()) == "header";
+    });
+    if (schlickFavgHeader && headers) {
+      const std::string path = (std::filesystem::path(o.outDir) / "Favg.h").string();
+      auto metadata = planMetadata;
+      metadata.insert(metadata.begin(), {"table", "Favg"});
+      metadata.insert(metadata.begin() + 1,
+                      {"content", "closed form (Schlick), no table: F_avg = 20/21 F0 + 1/21 F90"});
+      metadata.emplace_back("lutbakeVersion", LutbakeVersion());
+      metadata.emplace_back("commandLine", commandLine);
+      WriteSchlickFavgHeader(output.Add(path), writeOptions, metadata);
+      nlohmann::ordered_json entry;
+      entry["name"] = "Favg";
+      entry["closedForm"] = "F_avg = 20/21 F0 + 1/21 F90";
+      entry["files"] = {path};
+      summary["tables"].push_back(entry);
+      std::cerr << "Favg  closed form (every compensated material uses Schlick): Favg.h\n";
     }
     if (!unreached.empty()) {
       std::cerr << "lutbake bake: --tolerance " << settings.tolerance << " not reached within "
@@ -186,7 +280,8 @@ int RunBake(const BakeOptions &o, const std::string &commandLine) {
   summary["seconds"] = totalSeconds;
   if (tolerance) {
     double worst = 0.0;
-    for (const auto &t : summary["tables"]) worst = std::max(worst, t["errorMax"].get<double>());
+    for (const auto &t : summary["tables"])
+      if (t.contains("errorMax")) worst = std::max(worst, t["errorMax"].get<double>());
     char line[160];
     std::snprintf(line, sizeof line,
                   "tolerance %.3g reached on every texel: max bound %.2e, %.2f s in all\n",

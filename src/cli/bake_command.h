@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "lutbake/bake.h"
+#include "plan_command.h"
 #include "sampling_options.h"
 
 namespace lutbake::cli {
@@ -23,6 +24,8 @@ struct BakeOptions {
   std::string formats = "exr,bin,header";
   std::string headerNamespace = "lutbake_luts";
   bool json = false;
+  SceneOptions scene;  // --scene / --manifest: bake a plan
+  bool skipUnsupported = false;
 };
 
 // Option values (already validated) to library enums; shared with report.
@@ -35,6 +38,7 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &options);
 
 // Returns the process exit status: 0 success, 1 runtime failure (cannot
 // write), 2 usage error found after parsing.
-int RunBake(const BakeOptions &options, const std::string &commandLine);
+// `app` is the bake subcommand, to tell which options were given.
+int RunBake(const BakeOptions &options, const std::string &commandLine, CLI::App &app);
 
 }  // namespace lutbake::cli

@@ -7,6 +7,7 @@
 #include "check_command.h"
 #include "eval_command.h"
 #include "lutbake/bake.h"
+#include "plan_command.h"
 #include "report_command.h"
 
 namespace {
@@ -29,13 +30,20 @@ int main(int argc, char **argv) {
   app.footer(
       "Example:\n  lutbake bake --out out          # the four default tables\n"
       "  lutbake check out              # validate a bake without trusting it\n"
+      "  lutbake plan --scene car.gltf   # what a scene needs, and why\n"
       "  lutbake eval --table E --mu 0.5 --roughness 0.3\n"
       "  lutbake report --out report    # error against time of every estimator\n"
-      "Run 'lutbake COMMAND --help' (bake, check, eval, report) for their options.");
+      "Run 'lutbake COMMAND --help' (bake, plan, check, eval, report) for their options.");
   lutbake::cli::BakeOptions bakeOptions;
   CLI::App *bake =
       app.add_subcommand("bake", "Bake tables into a directory (EXR, .bin, C++ header)");
   lutbake::cli::SetupBakeCommand(*bake, bakeOptions);
+  lutbake::cli::PlanCommandOptions planOptions;
+  CLI::App *plan = app.add_subcommand(
+      "plan",
+      "What glTF scenes and manifests need: tables, narrowed ranges, and why the rest is "
+      "left out");
+  lutbake::cli::SetupPlanCommand(*plan, planOptions);
   lutbake::cli::EvalOptions evalOptions;
   CLI::App *eval = app.add_subcommand(
       "eval", "Evaluate any table at any points, with the error bound of each value");
@@ -71,7 +79,8 @@ int main(int argc, char **argv) {
     return 2;
   }
   try {
-    if (bake->parsed()) return lutbake::cli::RunBake(bakeOptions, commandLine);
+    if (bake->parsed()) return lutbake::cli::RunBake(bakeOptions, commandLine, *bake);
+    if (plan->parsed()) return lutbake::cli::RunPlan(planOptions);
     if (eval->parsed()) return lutbake::cli::RunEval(evalOptions);
     if (check->parsed()) return lutbake::cli::RunCheck(checkOptions);
     if (report->parsed()) return lutbake::cli::RunReport(reportOptions);

@@ -1,0 +1,72 @@
+// What one material needs from the tables: its microfacet model, the
+// perceptual roughness each of its specular layers can take, its Fresnel
+// model, and the lighting it is shaded with. The glTF reader (scene.h) and
+// the manifest reader (manifest.h) both produce these; plan.h turns a list
+// of them into the tables to bake.
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "lutbake/fresnel.h"
+#include "lutbake/ndf.h"
+#include "lutbake/smith.h"
+
+namespace lutbake {
+
+// A scene or manifest that cannot be used as it is: the message names the
+// file and the place in it (a JSON pointer such as
+// /materials/3/pbrMetallicRoughness/roughnessFactor, or a byte offset), the
+// value found and what is accepted.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The perceptual roughness one specular layer can take: exactly `min` when
+// min == max (a factor without a texture), else any value in [min, max] (a
+// texture multiplies the factor). Both in [0, 1].
+struct RoughnessUse {
+  std::string layer;  // "base" or "clearcoat"
+  double min = 0.0;
+  double max = 0.0;
+  bool exact() const { return min == max; }
+};
+
+// A Fresnel parameter the material uses: listed values, or a range.
+struct ParameterUse {
+  std::vector<double> values;   // exact values, when not a range
+  double min = 0.0, max = 0.0;  // the range, when `values` is empty
+  bool range() const { return values.empty(); }
+};
+
+struct FresnelUse {
+  FresnelModel model = FresnelModel::kSchlick;
+  ParameterUse eta;  // dielectric and conductor: relative IOR (real part)
+  ParameterUse k;    // conductor: extinction coefficient
+};
+
+struct MaterialSpec {
+  std::string name;    // as the file names it, or "materials[i]" when it has no name
+  std::string source;  // the file it was read from
+  std::string where;   // JSON pointer to it in that file
+  bool unlit = false;  // KHR_materials_unlit (or "unlit": true): needs no table
+  NdfKind ndf = NdfKind::kGgx;
+  SmithForm smith = SmithForm::kCorrelated;
+  // One entry per specular layer; empty when the material has no specular
+  // lobe at all (say, glTF metallic 0 with specularFactor 0).
+  std::vector<RoughnessUse> roughness;
+  FresnelUse fresnel;
+  // Per-material lighting; unset means "as the manifest or command line says".
+  std::optional<bool> ibl;
+  std::optional<bool> compensation;
+  // Features that need tables lutbake does not bake (glTF extension names).
+  std::vector<std::string> unsupported;
+  // Facts worth telling the user: a layer switched off by its factor, an
+  // extension ignored because it does not change the specular lobe, ...
+  std::vector<std::string> notes;
+};
+
+}  // namespace lutbake

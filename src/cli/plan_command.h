@@ -1,0 +1,39 @@
+// `lutbake plan --scene FILE... [--manifest FILE...]`: what a scene needs
+// (plan.h), in words or as JSON; and the scene options that `lutbake bake`
+// shares with it.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "lutbake/plan.h"
+
+namespace lutbake::cli {
+
+struct SceneOptions {
+  std::vector<std::string> scenes;
+  std::vector<std::string> manifests;
+  bool noIbl = false;
+  bool noCompensation = false;
+  bool used() const { return !scenes.empty() || !manifests.empty(); }
+};
+
+// --scene, --manifest, --no-ibl, --no-compensation.
+void AddSceneOptions(CLI::App &app, SceneOptions &options);
+
+// Reads the scenes and manifests and makes the plan. Returns 0, or the exit
+// status after printing why ("lutbake COMMAND: FILE: /json/pointer: ...").
+int MakePlanOrComplain(const std::string &command, const SceneOptions &options,
+                       PlanOptions planOptions, BakePlan *plan);
+
+struct PlanCommandOptions {
+  SceneOptions scene;
+  int size = 0;  // 0: the per-table defaults
+  bool json = false;
+};
+
+void SetupPlanCommand(CLI::App &app, PlanCommandOptions &options);
+int RunPlan(const PlanCommandOptions &options);
+
+}  // namespace lutbake::cli
