@@ -30,9 +30,10 @@ void Place::Fail(const std::string &what) const {
 Json Parse(std::string_view text, const std::string &file) {
   try {
     return Json::parse(text.begin(), text.end());
-  } catch (const Json::parse_error &e) {
-    // nlohmann's message starts with "[json.exception.parse_error.101] ";
-    // what follows says "parse error at line L, column C: ...".
+  } catch (const Json::exception &e) {
+    // A parse_error, or an out_of_range for a number beyond double (found by
+    // fuzzing: 51e308). nlohmann's message starts with
+    // "[json.exception.parse_error.101] "; what follows says where.
     std::string message = e.what();
     const size_t bracket = message.find("] ");
     if (message.rfind("[json.exception", 0) == 0 && bracket != std::string::npos)
