@@ -174,7 +174,7 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
       const Place at = extPlace.Child("KHR_materials_specular");
       json_input::RequireObject(*spec, at);
       const double specularFactor = Factor(*spec, "specularFactor", at, 1.0);
-      const bool specularTexture = Texture(*spec, "specularTexture", at);
+      Texture(*spec, "specularTexture", at);
       Texture(*spec, "specularColorTexture", at);
       if (const Json *c = Member(*spec, "specularColorFactor")) {
         const Place cp = at.Child("specularColorFactor");
@@ -182,9 +182,11 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
         if (c->size() != 3) cp.Fail("expected 3 numbers, found " + std::to_string(c->size()));
         for (size_t i = 0; i < 3; ++i) json_input::Number((*c)[i], cp.Child(i), 0.0, 1e30);
       }
-      // F0 and F90 of the dielectric part both scale with specularFactor:
-      // with no metal either, nothing reflects specularly.
-      if (specularFactor == 0.0 && !specularTexture && metallicFactor == 0.0) {
+      // F0 and F90 of the dielectric part both scale with specularFactor
+      // (its texture multiplies it, so 0 stays 0); metallicFactor 0 leaves
+      // no metal either (its texture multiplies it too): nothing reflects
+      // specularly.
+      if (specularFactor == 0.0 && metallicFactor == 0.0) {
         lobe = false;
         out.notes.push_back(
             "no specular lobe: metallicFactor 0 and KHR_materials_specular specularFactor 0");

@@ -68,7 +68,8 @@ TEST(Manifest, MistakesNameTheirPlace) {
       "/materials/0/fresnel/model");
   has(ErrorOf(R"({"materials": [{"roughness": 0.1, "fresnel": {"model": "dielectric"}}]})"),
       "a dielectric needs \"eta\"");
-  has(ErrorOf(R"({"materials": [{"roughness": 0.1, "fresnel": {"model": "conductor", "eta": 1}}]})"),
+  has(ErrorOf(
+          R"({"materials": [{"roughness": 0.1, "fresnel": {"model": "conductor", "eta": 1}}]})"),
       "a conductor needs");
   has(ErrorOf(R"({"materials": [{"roughness": 0.1, "fresnel": {"model": "schlick", "eta": 1}}]})"),
       "/materials/0/fresnel/eta: unknown key");

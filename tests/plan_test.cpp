@@ -80,7 +80,7 @@ TEST(Plan, TexturesNarrowToZeroToFactorKeepingTheTexelSpacing) {
   EXPECT_FALSE(e->y.listed());
   EXPECT_EQ(e->y.min, 0.0);
   EXPECT_EQ(e->y.max, 0.5);
-  EXPECT_EQ(e->y.count, 16);                // half of 32
+  EXPECT_EQ(e->y.count, 16);                  // half of 32
   EXPECT_EQ(Find(plan, "dfg")->y.count, 64);  // half of 128
   EXPECT_EQ(Find(plan, "Eavg")->x.count, 16);
 }
@@ -185,8 +185,7 @@ TEST(Plan, UnsupportedFeaturesAreListedAndTheRestPlanned) {
   ASSERT_EQ(plan.unsupported.size(), 5u);
   EXPECT_EQ(plan.unsupported[0].material, "velvet");
   EXPECT_EQ(plan.unsupported[0].feature, "KHR_materials_sheen");
-  EXPECT_EQ(Find(plan, "E")->roughness.values,
-            (std::vector<double>{0.0, 0.05, 0.1, 0.35, 0.8}));
+  EXPECT_EQ(Find(plan, "E")->roughness.values, (std::vector<double>{0.0, 0.05, 0.1, 0.35, 0.8}));
 }
 
 TEST(Plan, SeveralScenesAreTheirUnion) {
@@ -295,8 +294,7 @@ TEST(PlanCli, JsonHasTheDocumentedShape) {
 
   const auto human = Lutbake("plan --scene " + kPlans + "textured.gltf");
   EXPECT_EQ(human.status, 0);
-  EXPECT_NE(human.output.find("perceptualRoughness linear [0, 0.5] (16 texels)"),
-            std::string::npos)
+  EXPECT_NE(human.output.find("perceptualRoughness linear [0, 0.5] (16 texels)"), std::string::npos)
       << human.output;
   EXPECT_NE(human.output.find("left out:"), std::string::npos);
 }
@@ -340,14 +338,16 @@ TEST(PlanCli, BakeWritesExactlyThePlanAndChecks) {
                 static_cast<float>(e.x.TexelCenter(3)), 0.5 * (e.value(3, 0) + e.value(3, 1)));
   checks += line;
   checks += "  fail += lutbake_luts::lookup_E(0.5f, 0.9f) != lutbake_luts::lookup_E(0.5f, 0.5f);\n";
-  checks += "  fail += std::fabs(lutbake_luts::lookup_Favg(0.04f) - (0.04f * 20.0f + 1.0f) / "
-            "21.0f) > 1e-7f;\n";
-  std::ofstream(out / "main.cpp") << "#include <cmath>\n#include <cstdio>\n#include \"E.h\"\n"
-                                     "#include \"Eavg.h\"\n#include \"Favg.h\"\n#include \"dfg.h\"\n"
-                                     "int main() {\n  int fail = 0;\n"
-                                  << checks
-                                  << "  std::printf(\"%d failures\\n\", fail);\n"
-                                     "  return fail == 0 ? 0 : 1;\n}\n";
+  checks +=
+      "  fail += std::fabs(lutbake_luts::lookup_Favg(0.04f) - (0.04f * 20.0f + 1.0f) / "
+      "21.0f) > 1e-7f;\n";
+  std::ofstream(out / "main.cpp")
+      << "#include <cmath>\n#include <cstdio>\n#include \"E.h\"\n"
+         "#include \"Eavg.h\"\n#include \"Favg.h\"\n#include \"dfg.h\"\n"
+         "int main() {\n  int fail = 0;\n"
+      << checks
+      << "  std::printf(\"%d failures\\n\", fail);\n"
+         "  return fail == 0 ? 0 : 1;\n}\n";
   const std::string exe = (out / "check_headers").string();
   const std::string command = std::string(LUTBAKE_TEST_CXX) +
                               " -std=c++17 -Wall -Wextra -Wpedantic -Werror -fno-exceptions -I" +
@@ -364,8 +364,9 @@ TEST(PlanCli, UnsupportedStopsTheBakeUnlessSkipped) {
   EXPECT_EQ(stop.status, 1);
   EXPECT_NE(stop.output.find("velvet: KHR_materials_sheen"), std::string::npos) << stop.output;
   EXPECT_FALSE(fs::exists(out));
-  const auto skip = Lutbake("bake --out " + out.string() + " --scene " + kPlans +
-                            "unsupported.gltf --size 4 --samples 64 --skip-unsupported --format exr");
+  const auto skip =
+      Lutbake("bake --out " + out.string() + " --scene " + kPlans +
+              "unsupported.gltf --size 4 --samples 64 --skip-unsupported --format exr");
   EXPECT_EQ(skip.status, 0) << skip.output;
   EXPECT_TRUE(fs::exists(out / "E.exr"));
   fs::remove_all(out);

@@ -99,8 +99,7 @@ TEST(SceneReader, RecognisesWhatItCannotBake) {
   EXPECT_EQ(Named(ms, "velvet").unsupported, std::vector<std::string>{"KHR_materials_sheen"});
   EXPECT_EQ(Named(ms, "glass").unsupported,
             (std::vector<std::string>{"KHR_materials_transmission", "KHR_materials_volume"}));
-  EXPECT_EQ(Named(ms, "brushed").unsupported,
-            std::vector<std::string>{"KHR_materials_anisotropy"});
+  EXPECT_EQ(Named(ms, "brushed").unsupported, std::vector<std::string>{"KHR_materials_anisotropy"});
   EXPECT_EQ(Named(ms, "soap").unsupported, std::vector<std::string>{"KHR_materials_iridescence"});
   // KHR_materials_ior and _specular only change Schlick's F0 and F90.
   const MaterialSpec &diamond = Named(ms, "diamond");
@@ -163,7 +162,8 @@ TEST(SceneReader, BadFilesNameTheFileAndThePlace) {
     EXPECT_NE(message.find(file), std::string::npos) << message;
     EXPECT_NE(message.find(fragment), std::string::npos) << file << ": " << message;
   };
-  expectError("bad_roughness.gltf", "/materials/1/pbrMetallicRoughness/roughnessFactor: 7 is outside");
+  expectError("bad_roughness.gltf",
+              "/materials/1/pbrMetallicRoughness/roughnessFactor: 7 is outside");
   expectError("malformed.gltf", "line 3");
   expectError("nan.gltf", "malformed JSON");
   expectError("not_gltf.json", "not a glTF file");
@@ -212,9 +212,10 @@ TEST(SceneReader, WrongTypesAreRefused) {
             std::string::npos);
   EXPECT_NE(error(R"([{"extensions": {"KHR_materials_ior": {"ior": 0.5}}}])").find("ior >= 1"),
             std::string::npos);
-  EXPECT_NE(error(R"([{"extensions": {"KHR_materials_clearcoat": {"clearcoatRoughnessFactor": 2}}}])")
-                .find("clearcoatRoughnessFactor: 2 is outside"),
-            std::string::npos);
+  EXPECT_NE(
+      error(R"([{"extensions": {"KHR_materials_clearcoat": {"clearcoatRoughnessFactor": 2}}}])")
+          .find("clearcoatRoughnessFactor: 2 is outside"),
+      std::string::npos);
   EXPECT_EQ(error(R"([{"extensions": {"KHR_materials_ior": {"ior": 0}}}])"), "");
 }
 
