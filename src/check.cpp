@@ -11,6 +11,8 @@
 #include <fstream>
 #include <map>
 #include <optional>
+#include <regex>
+#include <set>
 
 #include "lutbake/binary_format.h"
 #include "lutbake/hash.h"
@@ -76,7 +78,9 @@ std::string Where(const std::vector<std::pair<std::string, double>> &at) {
 
 class Checker {
  public:
-  Checker(const std::string &dir, const CheckOptions &options) : dir_(dir), options_(options) {}
+  // suffix: "" for E, Eavg, Favg, dfg; "_beckmann" for E_beckmann, ...
+  Checker(const std::string &dir, const CheckOptions &options, std::string suffix)
+      : dir_(dir), options_(options), suffix_(std::move(suffix)) {}
 
   CheckReport Run() {
     const auto start = std::chrono::steady_clock::now();
@@ -122,7 +126,7 @@ class Checker {
   }
 
   void Load(TableKind kind) {
-    const std::string name = TableName(kind);
+    const std::string name = Name(kind);
     const fs::path base = fs::path(dir_) / name;
     const std::string exrPath = base.string() + ".exr", binPath = base.string() + ".bin",
                       hPath = base.string() + ".h", errPath = base.string() + ".err.exr";
@@ -200,7 +204,7 @@ class Checker {
   // The metadata: the table lutbake claims to have written. False when the
   // numeric checks cannot run on it.
   bool CheckMetadata(Loaded &t) {
-    const std::string name = TableName(t.kind);
+    const std::string name = Name(t.kind);
     Table &table = t.table;
     std::vector<std::string> problems;
     const auto meta = [&](const std::string &key) -> std::string {
@@ -208,7 +212,8 @@ class Checker {
       if (!v) problems.push_back("key '" + key + "' missing");
       return v ? *v : std::string();
     };
-    if (meta("table") != name) problems.push_back("table is not '" + name + "'");
+    if (meta("table") != TableName(t.kind))
+      problems.push_back("table is not '" + std::string(TableName(t.kind)) + "'");
     const int channels = t.kind == TableKind::kDfg ? 2 : 1;
     if (table.channels != channels)
       problems.push_back(std::to_string(table.channels) + " channels, expected " +
@@ -276,7 +281,7 @@ class Checker {
   void CheckFormats(const Loaded &t, const std::optional<Table> &exr,
                     const std::optional<Table> &bin, const std::optional<HeaderValues> &header,
                     const std::optional<Table> &err) {
-    const std::string name = TableName(t.kind);
+    const std::string name = Name(t.kind);
     std::vector<std::string> compared, problems;
     const auto sameValues = [&](const std::vector<double> &a, const std::string &what) {
       if (a.size() != t.table.values.size()) {
@@ -432,7 +437,7 @@ class Checker {
   // ---- single tables ---------------------------------------------------
 
   void CheckFinite(const Loaded &t) {
-    const std::string name = TableName(t.kind);
+    const std::string name = Name(t.kind);
     size_t bad = 0, first = 0;
     for (size_t i = 0; i < t.table.values.size(); ++i)
       if (!std::isfinite(t.table.values[i]) || !std::isfinite(t.table.errors[i])) {
@@ -454,7 +459,7 @@ class Checker {
   }
 
   void CheckRange(const Loaded &t) {
-    const std::string name = TableName(t.kind);
+    const std::string name = Name(t.kind);
     const Table &table = t.table;
     // Float rounding: a value <= 1 in double stays <= 1 in float; a sum of
     // two rounded values may exceed 1 by one ulp.
@@ -495,7 +500,7 @@ class Checker {
   }
 
   void CheckTexels(const Loaded &t) {
-    const std::string name = TableName(t.kind);
+    const std::string name = Name(t.kind);
     const Table &table = t.table;
     const size_t texels = static_cast<size_t>(table.width()) * table.height();
     double worst = -1.0, worstAllowed = 0.0, worstReal = 0.0, realMax = 0.0, realSq = 0.0;
@@ -547,7 +552,7 @@ class Checker {
   }
 
   void CheckPoints(const Loaded &t) {
-    const std::string name = TableName(t.kind);
+    const std::string name = Name(t.kind);
     const Table &table = t.table;
     double worstLookup = 0.0, worstInterp = 0.0, worstExcess = -1.0, excessAllowed = 0.0,
            excessValue = 0.0;
@@ -592,7 +597,7 @@ class Checker {
   }
 
   void CheckMonotonic(const Loaded &t) {
-    const std::string name = TableName(t.kind);
+    const std::string name = Name(t.kind);
     const Table &table = t.table;
     int direction = 0;  // +1 non-decreasing, -1 non-increasing along x
     double from = table.x.min;
@@ -677,8 +682,8 @@ class Checker {
                  const std::string &check) {
     if (a.ndf == b.ndf && a.smith == b.smith) return true;
     Add(subject, check, CheckStatus::kFail,
-        std::string(TableName(a.kind)) + " is " + std::string(ToString(a.ndf)) + " " +
-            std::string(ToString(a.smith)) + " but " + TableName(b.kind) + " is " +
+        Name(a.kind) + " is " + std::string(ToString(a.ndf)) + " " +
+            std::string(ToString(a.smith)) + " but " + Name(b.kind) + " is " +
             std::string(ToString(b.ndf)) + " " + std::string(ToString(b.smith)) +
             ": the set mixes models");
     return false;
@@ -688,7 +693,7 @@ class Checker {
   void CheckIdentity() {
     const Loaded *e = Usable(TableKind::kE), *d = Usable(TableKind::kDfg);
     if (!e || !d) return;
-    if (!SameModel(*e, *d, "E+dfg", "identity")) return;
+    if (!SameModel(*e, *d, "E+dfg" + suffix_, "identity")) return;
     const Table &te = e->table, &td = d->table;
     double worst = 0.0, worstExcess = -1.0, excessValue = 0, excessAllowed = 0;
     std::vector<std::pair<std::string, double>> at, atExcess;
@@ -713,13 +718,13 @@ class Checker {
     const std::string where =
         "at E's " + std::to_string(te.width() * te.height()) + " texel centres (dfg interpolated)";
     if (worstExcess > 0.0)
-      Add("E+dfg", "identity", CheckStatus::kFail,
+      Add("E+dfg" + suffix_, "identity", CheckStatus::kFail,
           "A + B - E = " + Short(excessValue) + " at " + Where(atExcess) + ", more than the " +
               Short(excessAllowed) + " that the tables' bounds and interpolation allow (" + where +
               ")",
           excessValue, excessAllowed, atExcess);
     else
-      Add("E+dfg", "identity", CheckStatus::kPass,
+      Add("E+dfg" + suffix_, "identity", CheckStatus::kPass,
           "A + B = E " + where + ": max |A + B - E| " + Short(worst) + " at " + Where(at), worst,
           0.0, at);
   }
@@ -729,10 +734,10 @@ class Checker {
   void CheckAverage() {
     const Loaded *e = Usable(TableKind::kE), *a = Usable(TableKind::kEavg);
     if (!e || !a) return;
-    if (!SameModel(*e, *a, "E+Eavg", "average")) return;
+    if (!SameModel(*e, *a, "E+Eavg" + suffix_, "average")) return;
     const Table &te = e->table, &ta = a->table;
     if (DescribeAxis(te.y) != DescribeAxis(ta.x) || te.x.min != 0.0 || te.x.max != 1.0) {
-      Add("E+Eavg", "average", CheckStatus::kSkipped,
+      Add("E+Eavg" + suffix_, "average", CheckStatus::kSkipped,
           "E's rows and E_avg's texels are not at the same roughness, or E does not span mu in "
           "[0, 1]");
       return;
@@ -760,13 +765,13 @@ class Checker {
         atExcess = At(ta, r, 0.0);
     }
     if (worstExcess > 0.0)
-      Add("E+Eavg", "average", CheckStatus::kFail,
+      Add("E+Eavg" + suffix_, "average", CheckStatus::kFail,
           "E_avg differs from 2 sum E mu / N over E's row by " + Short(excessValue) + " at " +
               Where(atExcess) + ", more than the " + Short(excessAllowed) +
               " the bounds and the midpoint rule on exact texels allow",
           excessValue, excessAllowed, atExcess);
     else
-      Add("E+Eavg", "average", CheckStatus::kPass,
+      Add("E+Eavg" + suffix_, "average", CheckStatus::kPass,
           "E_avg against the midpoint rule 2 sum E mu / N over each row of E: max deviation " +
               Short(worst) + " at " + Where(at),
           worst, 0.0, at);
@@ -780,10 +785,10 @@ class Checker {
   void CheckFurnace() {
     const Loaded *e = Usable(TableKind::kE), *a = Usable(TableKind::kEavg);
     if (!e || !a) return;
-    if (!SameModel(*e, *a, "E+Eavg", "furnace")) return;
+    if (!SameModel(*e, *a, "E+Eavg" + suffix_, "furnace")) return;
     const Table &te = e->table, &ta = a->table;
     if (te.x.min != 0.0 || te.x.max != 1.0) {
-      Add("E+Eavg", "furnace", CheckStatus::kSkipped,
+      Add("E+Eavg" + suffix_, "furnace", CheckStatus::kSkipped,
           "E does not span mu in [0, 1], so integral f_ms cos cannot be formed");
       return;
     }
@@ -850,13 +855,13 @@ class Checker {
       detail += "; E_avg is 1 at r <= " + Short(undefinedBelow) +
                 ": f_ms is 0 / 0 there and an engine must guard it";
     if (worstExcess > 0.0)
-      Add("E+Eavg", "furnace", CheckStatus::kFail,
+      Add("E+Eavg" + suffix_, "furnace", CheckStatus::kFail,
           "the baked deviation departs from that of exact texels by " + Short(excessValue) +
               " at " + Where(atExcess) + ", more than the " + Short(excessAllowed) +
               " the tables' bounds allow. " + detail,
           excessValue, excessAllowed, atExcess);
     else
-      Add("E+Eavg", "furnace", CheckStatus::kPass, detail, worst, 0.0, at);
+      Add("E+Eavg" + suffix_, "furnace", CheckStatus::kPass, detail, worst, 0.0, at);
   }
 
   struct RandomPoint {
@@ -864,8 +869,11 @@ class Checker {
     PointValue truth;
   };
 
+  std::string Name(TableKind kind) const { return TableName(kind) + suffix_; }
+
   std::string dir_;
   CheckOptions options_;
+  std::string suffix_;
   CheckReport report_;
   std::map<TableKind, Loaded> tables_;
   std::map<TableKind, std::vector<PointValue>> refTexel_;
@@ -877,7 +885,27 @@ class Checker {
 CheckReport CheckBakedSet(const std::string &dir, const CheckOptions &options) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw IoError(dir + " is not a directory");
-  return Checker(dir, options).Run();
+  // A bake plan may write variants (E_beckmann, Favg_dielectric, ...): each
+  // suffix is checked as a set of its own.
+  static const std::regex kTableFile(
+      R"(^(Eavg|Favg|dfg|E)(_[A-Za-z0-9_]+)?(\.err)?\.(exr|bin|h)$)");
+  std::set<std::string> suffixes;
+  for (const auto &entry : fs::directory_iterator(dir, ec)) {
+    std::smatch m;
+    const std::string file = entry.path().filename().string();
+    if (std::regex_match(file, m, kTableFile)) suffixes.insert(m[2].str());
+  }
+  if (suffixes.empty()) suffixes.insert("");
+  CheckReport report;
+  for (const std::string &suffix : suffixes) {
+    const CheckReport part = Checker(dir, options, suffix).Run();
+    report.dir = part.dir;
+    report.files.insert(report.files.end(), part.files.begin(), part.files.end());
+    report.results.insert(report.results.end(), part.results.begin(), part.results.end());
+    report.referenceEvaluations += part.referenceEvaluations;
+    report.seconds += part.seconds;
+  }
+  return report;
 }
 
 }  // namespace lutbake

@@ -357,6 +357,43 @@ TEST(PlanCli, BakeWritesExactlyThePlanAndChecks) {
   fs::remove_all(out);
 }
 
+// Two manifests needing GGX, Beckmann and separable variants and both
+// exact Fresnel models: every variant is written under its own name, lutbake
+// check checks each set, and all headers compile together in one program.
+TEST(PlanCli, VariantsBakeCheckAndCompileTogether) {
+  const fs::path out = Scratch("plan_variants");
+  const auto r = Lutbake("bake --out " + out.string() + " --manifest " + kPlans + "models.json " +
+                         kPlans + "dielectric.json --size 8 --tolerance 1e-5");
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::string includes;
+  size_t headers = 0;
+  for (const auto &e : fs::directory_iterator(out))
+    if (e.path().extension() == ".h") {
+      includes += "#include \"" + e.path().filename().string() + "\"\n";
+      ++headers;
+    }
+  EXPECT_EQ(headers, 11u);  // 3 x (E, Eavg, dfg) + Favg_dielectric + Favg_conductor
+  const auto check = Lutbake("check " + out.string() + " --points 16 --furnace-grid 17");
+  EXPECT_EQ(check.status, 0) << check.output;
+  for (const char *subject : {"E_beckmann", "dfg_separable", "Favg_conductor", "E+Eavg_beckmann"})
+    EXPECT_NE(check.output.find(subject), std::string::npos) << subject << "\n" << check.output;
+  std::ofstream(out / "main.cpp")
+      << includes
+      << "int main() {\n"
+         "  const float a = lutbake_luts::lookup_E_beckmann(0.5f, 0.3f);\n"
+         "  const float b = lutbake_luts::lookup_dfg_separable(0.5f, 0.2f)[0];\n"
+         "  const float c = lutbake_luts::lookup_Favg_dielectric(1.5f);\n"
+         "  const float d = lutbake_luts::lookup_Favg_conductor(0.47f, 2.83f);\n"
+         "  return a > 0.0f && b > 0.0f && c > 0.0f && d > 0.0f ? 0 : 1;\n}\n";
+  const std::string exe = (out / "variants").string();
+  const std::string command = std::string(LUTBAKE_TEST_CXX) +
+                              " -std=c++17 -Wall -Wextra -Wpedantic -Werror -fno-exceptions -I" +
+                              out.string() + " " + (out / "main.cpp").string() + " -o " + exe +
+                              " && " + exe;
+  EXPECT_EQ(std::system(command.c_str()), 0) << command;
+  fs::remove_all(out);
+}
+
 TEST(PlanCli, UnsupportedStopsTheBakeUnlessSkipped) {
   const fs::path out = Scratch("plan_unsupported");
   const auto stop = Lutbake("bake --out " + out.string() + " --scene " + kPlans +

@@ -1,7 +1,9 @@
 // `lutbake check DIR`: validates a baked set without trusting the baker.
 //
 // Every table in DIR (T.exr, T.bin, T.h, T.err.exr for T in E, Eavg, Favg,
-// dfg) is read back and checked for
+// dfg, and the variants a bake plan names E_beckmann, Favg_dielectric, ...,
+// each suffix checked as a set of its own; a plan's closed-form Favg.h is
+// recognised) is read back and checked for
 //   metadata   the files describe a table lutbake knows (kind, model, axes,
 //              texel convention), and every format holds the same numbers;
 //   finite     no NaN or Inf among values and error bounds;
