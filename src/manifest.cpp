@@ -106,7 +106,10 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
     if (s == "schlick") {
       json_input::OnlyKeys(*f, at, {"model", "f0"});
       out.fresnel.model = FresnelModel::kSchlick;
-      if (const Json *f0 = Member(*f, "f0")) Parameter(*f0, at.Child("f0"), 0.0, 1.0);
+      if (const Json *f0 = Member(*f, "f0")) {
+        const ParameterUse p = Parameter(*f0, at.Child("f0"), 0.0, 1.0);
+        out.fresnel.schlickF0 = p.values;  // a range fixes no constant
+      }
     } else if (s == "dielectric") {
       json_input::OnlyKeys(*f, at, {"model", "eta"});
       out.fresnel.model = FresnelModel::kDielectric;

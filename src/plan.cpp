@@ -278,6 +278,23 @@ std::string PlanJson(const BakePlan &plan) {
     j["ndf"] = ToString(m.ndf);
     j["smith"] = ToString(m.smith);
     j["fresnel"] = ToString(m.fresnel.model);
+    if (!m.fresnel.schlickF0.empty()) {
+      // Schlick's F_avg = 20/21 F0 + 1/21 F90, per channel: a constant, no table.
+      Json favg = Json::array();
+      for (double f0 : m.fresnel.schlickF0)
+        favg.push_back(f0 * (20.0 / 21.0) + m.fresnel.schlickF90 / 21.0);
+      j["F0"] = m.fresnel.schlickF0;
+      j["F90"] = m.fresnel.schlickF90;
+      j["Favg"] = favg;
+    } else if (m.fresnel.model != FresnelModel::kSchlick && !m.fresnel.eta.range() &&
+               m.fresnel.eta.values.size() == 1 &&
+               (m.fresnel.model == FresnelModel::kDielectric ||
+                (!m.fresnel.k.range() && m.fresnel.k.values.size() == 1))) {
+      const double k = m.fresnel.model == FresnelModel::kConductor ? m.fresnel.k.values[0] : 0.0;
+      j["eta"] = m.fresnel.eta.values[0];
+      if (m.fresnel.model == FresnelModel::kConductor) j["k"] = k;
+      j["Favg"] = EvaluateFresnelAverage(m.fresnel.model, m.fresnel.eta.values[0], k).value[0];
+    }
     j["roughness"] = Json::array();
     for (const RoughnessUse &r : m.roughness)
       j["roughness"].push_back({{"layer", r.layer}, {"min", r.min}, {"max", r.max}});

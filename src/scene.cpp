@@ -1,5 +1,6 @@
 #include "lutbake/scene.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -160,27 +161,34 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
     out.notes.push_back("KHR_materials_pbrSpecularGlossiness: roughness = 1 - glossiness");
   } else {
     bool lobe = true;
-    if (const Json *ior = ext("KHR_materials_ior")) {
+    // glTF's dielectric Fresnel is Schlick's with F0 = ((ior - 1) / (ior +
+    // 1))^2 (ior 1.5 by default: 0.04; ior 0 means F0 = 1), scaled by
+    // KHR_materials_specular: F0 = min(F0 specularColorFactor, 1)
+    // specularFactor per channel, F90 = specularFactor.
+    double ior = 1.5, specularFactor = 1.0;
+    double specularColor[3] = {1.0, 1.0, 1.0};
+    if (const Json *iorExt = ext("KHR_materials_ior")) {
       const Place at = extPlace.Child("KHR_materials_ior");
-      json_input::RequireObject(*ior, at);
-      if (const Json *v = Member(*ior, "ior")) {
-        const double eta = json_input::Number(*v, at.Child("ior"), 0.0, 1e6);
-        if (eta > 0.0 && eta < 1.0)
-          at.Child("ior").Fail(FormatDouble(eta) +
+      json_input::RequireObject(*iorExt, at);
+      if (const Json *v = Member(*iorExt, "ior")) {
+        ior = json_input::Number(*v, at.Child("ior"), 0.0, 1e6);
+        if (ior > 0.0 && ior < 1.0)
+          at.Child("ior").Fail(FormatDouble(ior) +
                                " is not accepted: KHR_materials_ior takes ior >= 1, or 0 (F0 = 1)");
       }
     }
     if (const Json *spec = ext("KHR_materials_specular")) {
       const Place at = extPlace.Child("KHR_materials_specular");
       json_input::RequireObject(*spec, at);
-      const double specularFactor = Factor(*spec, "specularFactor", at, 1.0);
+      specularFactor = Factor(*spec, "specularFactor", at, 1.0);
       Texture(*spec, "specularTexture", at);
       Texture(*spec, "specularColorTexture", at);
       if (const Json *c = Member(*spec, "specularColorFactor")) {
         const Place cp = at.Child("specularColorFactor");
         json_input::RequireArray(*c, cp);
         if (c->size() != 3) cp.Fail("expected 3 numbers, found " + std::to_string(c->size()));
-        for (size_t i = 0; i < 3; ++i) json_input::Number((*c)[i], cp.Child(i), 0.0, 1e30);
+        for (size_t i = 0; i < 3; ++i)
+          specularColor[i] = json_input::Number((*c)[i], cp.Child(i), 0.0, 1e30);
       }
       // F0 and F90 of the dielectric part both scale with specularFactor
       // (its texture multiplies it, so 0 stays 0); metallicFactor 0 leaves
@@ -192,6 +200,10 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
             "no specular lobe: metallicFactor 0 and KHR_materials_specular specularFactor 0");
       }
     }
+    const double f0 = ior == 0.0 ? 1.0 : ((ior - 1.0) / (ior + 1.0)) * ((ior - 1.0) / (ior + 1.0));
+    for (double c : specularColor)
+      out.fresnel.schlickF0.push_back(std::min(f0 * c, 1.0) * specularFactor);
+    out.fresnel.schlickF90 = specularFactor;
     if (lobe) {
       const double r = SnapMirror(roughnessFactor, out, "roughnessFactor");
       out.roughness.push_back({"base", roughnessTexture ? 0.0 : r, r});

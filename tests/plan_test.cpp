@@ -291,6 +291,10 @@ TEST(PlanCli, JsonHasTheDocumentedShape) {
   ASSERT_EQ(j["unsupported"].size(), 5u);
   EXPECT_EQ(j["unsupported"][1]["material"], "glass");
   EXPECT_EQ(j["unsupported"][1]["feature"], "KHR_materials_transmission");
+  // Per-material Schlick constants: F_avg = 20/21 F0 + 1/21 F90 with glTF's F0 = 0.04.
+  const auto &paint = j["materials"][0];
+  EXPECT_EQ(paint["name"], "paint");
+  EXPECT_NEAR(paint["Favg"][0].get<double>(), 0.04 * 20.0 / 21.0 + 1.0 / 21.0, 1e-16);
 
   const auto human = Lutbake("plan --scene " + kPlans + "textured.gltf");
   EXPECT_EQ(human.status, 0);

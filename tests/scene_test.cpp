@@ -106,6 +106,12 @@ TEST(SceneReader, RecognisesWhatItCannotBake) {
   EXPECT_TRUE(diamond.unsupported.empty());
   EXPECT_EQ(diamond.fresnel.model, FresnelModel::kSchlick);
   EXPECT_EQ(diamond.roughness.at(0).max, 0.0);
+  // F0 = ((ior - 1) / (ior + 1))^2 for ior 2.42; glTF's default ior 1.5 gives 0.04.
+  const double f0 = (1.42 / 3.42) * (1.42 / 3.42);
+  ASSERT_EQ(diamond.fresnel.schlickF0.size(), 3u);
+  EXPECT_NEAR(diamond.fresnel.schlickF0[1], f0, 1e-15);
+  EXPECT_EQ(diamond.fresnel.schlickF90, 1.0);
+  EXPECT_NEAR(Named(ms, "velvet").fresnel.schlickF0.at(0), 0.04, 1e-16);
   // The unsupported materials' specular lobes still need their roughness.
   EXPECT_EQ(Named(ms, "velvet").roughness.at(0).max, 0.8);
 }

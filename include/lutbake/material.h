@@ -46,6 +46,13 @@ struct FresnelUse {
   FresnelModel model = FresnelModel::kSchlick;
   ParameterUse eta;  // dielectric and conductor: relative IOR (real part)
   ParameterUse k;    // conductor: extinction coefficient
+  // Schlick, when the file fixes them: F0 per colour channel (one value, or
+  // r, g, b) and F90. For glTF these are the dielectric part's (from
+  // KHR_materials_ior and _specular; the metal part's F0 is the base colour,
+  // and textures can only scale them down). Reported, with the exact
+  // F_avg = 20/21 F0 + 1/21 F90 of each: per-material constants, no table.
+  std::vector<double> schlickF0;
+  double schlickF90 = 1.0;
 };
 
 struct MaterialSpec {
