@@ -40,4 +40,19 @@ inline std::filesystem::path Scratch(const std::string &name) {
   return dir;
 }
 
+// Compiles dir/main.cpp against the headers in dir as an engine would
+// (-Wall -Wextra -Wpedantic -Werror -fno-exceptions) and runs it. Returns
+// the shell command, which the caller prints on failure, and sets *status to
+// the system() status (0: compiled and the program returned 0).
+inline std::string CompileAndRun(const std::filesystem::path &dir, const std::string &standard,
+                                 int *status) {
+  const std::string exe = (dir / ("main_" + standard)).string();
+  const std::string command = std::string(LUTBAKE_TEST_CXX) + " -std=" + standard +
+                              " -Wall -Wextra -Wpedantic -Werror -fno-exceptions -I" +
+                              dir.string() + " " + (dir / "main.cpp").string() + " -o " + exe +
+                              " && " + exe;
+  *status = std::system(command.c_str());
+  return command;
+}
+
 }  // namespace lutbake::test

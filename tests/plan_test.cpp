@@ -352,12 +352,9 @@ TEST(PlanCli, BakeWritesExactlyThePlanAndChecks) {
       << checks
       << "  std::printf(\"%d failures\\n\", fail);\n"
          "  return fail == 0 ? 0 : 1;\n}\n";
-  const std::string exe = (out / "check_headers").string();
-  const std::string command = std::string(LUTBAKE_TEST_CXX) +
-                              " -std=c++17 -Wall -Wextra -Wpedantic -Werror -fno-exceptions -I" +
-                              out.string() + " " + (out / "main.cpp").string() + " -o " + exe +
-                              " && " + exe;
-  EXPECT_EQ(std::system(command.c_str()), 0) << command;
+  int status = -1;
+  const std::string command = test::CompileAndRun(out, "c++17", &status);
+  EXPECT_EQ(status, 0) << command;
   fs::remove_all(out);
 }
 
@@ -389,12 +386,9 @@ TEST(PlanCli, VariantsBakeCheckAndCompileTogether) {
          "  const float c = lutbake_luts::lookup_Favg_dielectric(1.5f);\n"
          "  const float d = lutbake_luts::lookup_Favg_conductor(0.47f, 2.83f);\n"
          "  return a > 0.0f && b > 0.0f && c > 0.0f && d > 0.0f ? 0 : 1;\n}\n";
-  const std::string exe = (out / "variants").string();
-  const std::string command = std::string(LUTBAKE_TEST_CXX) +
-                              " -std=c++17 -Wall -Wextra -Wpedantic -Werror -fno-exceptions -I" +
-                              out.string() + " " + (out / "main.cpp").string() + " -o " + exe +
-                              " && " + exe;
-  EXPECT_EQ(std::system(command.c_str()), 0) << command;
+  int status = -1;
+  const std::string command = test::CompileAndRun(out, "c++17", &status);
+  EXPECT_EQ(status, 0) << command;
   fs::remove_all(out);
 }
 

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "cli_run.h"
 #include "lutbake/bake.h"
 #include "lutbake/binary_format.h"
 
@@ -158,12 +159,9 @@ TEST(CppHeaderWriter, CompilesWithWerrorAndLooksUpExactly) {
          "#include \"Favg.h\"\n#include \"dfg.h\"\nint main() {\n  int fail = 0;\n"
       << checks << "  std::printf(\"%d failures\\n\", fail);\n  return fail == 0 ? 0 : 1;\n}\n";
   for (const char *standard : {"c++17", "c++20"}) {
-    const std::string exe = (dir / (std::string("check_") + standard)).string();
-    const std::string command = std::string(LUTBAKE_TEST_CXX) + " -std=" + standard +
-                                " -Wall -Wextra -Wpedantic -Werror -fno-exceptions -I" +
-                                dir.string() + " " + (dir / "main.cpp").string() + " -o " + exe +
-                                " && " + exe;
-    EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    int status = -1;
+    const std::string command = test::CompileAndRun(dir, standard, &status);
+    EXPECT_EQ(status, 0) << command;
   }
   fs::remove_all(dir);
 }
