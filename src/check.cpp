@@ -47,7 +47,8 @@ struct Loaded {
   Table table;                  // values of the primary file (EXR, else .bin, else .h)
   std::string primary;          // its path
   bool perTexelErrors = false;  // table.errors holds per-texel bounds (else errorMax)
-  double statedErrorMax = 0.0;  // metadata errorMax
+  double statedErrorMax = 0.0;  // metadata errorMax (+ storageError)
+  double storageError = 0.0;    // a half-storage header's stated rounding, when it is primary
   NdfKind ndf = NdfKind::kGgx;
   SmithForm smith = SmithForm::kCorrelated;
   FresnelModel fresnel = FresnelModel::kSchlick;
@@ -187,6 +188,20 @@ class Checker {
       return;  // nothing readable; the reasons are reported above
     }
     if (!CheckMetadata(t)) return;
+    // A half-storage header as the primary file: its values carry the
+    // storage rounding too, which the header states (storageErrorMax).
+    if (!exr && !bin && header && header->half) {
+      const std::string *storage = t.table.FindMetadata("storageErrorMax");
+      char *end = nullptr;
+      const double extra = storage ? std::strtod(storage->c_str(), &end) : -1.0;
+      if (!storage || *end != '\0' || !(extra >= 0.0 && extra <= 1.0)) {
+        Add(name, "metadata", CheckStatus::kFail,
+            hPath + ": half storage without a valid storageErrorMax");
+        return;
+      }
+      t.storageError = extra;
+      t.statedErrorMax += extra;
+    }
     // Per-texel bounds: the .bin error block, else T.err.exr.
     if (bin && bin->errors.size() == t.table.values.size()) {
       t.table.errors = bin->errors;
@@ -283,14 +298,16 @@ class Checker {
                     const std::optional<Table> &err) {
     const std::string name = Name(t.kind);
     std::vector<std::string> compared, problems;
-    const auto sameValues = [&](const std::vector<double> &a, const std::string &what) {
+    const auto sameValues = [&](const std::vector<double> &a, const std::string &what,
+                                bool half = false) {
       if (a.size() != t.table.values.size()) {
         problems.push_back(what + " has " + std::to_string(a.size()) + " values, " + t.primary +
                            " " + std::to_string(t.table.values.size()));
         return;
       }
       for (size_t i = 0; i < a.size(); ++i)
-        if (static_cast<float>(a[i]) != static_cast<float>(t.table.values[i]) &&
+        if (static_cast<float>(a[i]) !=
+                static_cast<float>(half ? RoundToHalf(t.table.values[i]) : t.table.values[i]) &&
             !(std::isnan(a[i]) && std::isnan(t.table.values[i]))) {
           const int c = static_cast<int>(i % t.table.channels);
           const size_t texel = i / t.table.channels;
@@ -312,8 +329,9 @@ class Checker {
       sameValues(bin->values, name + ".bin");
     }
     if (header && (exr || bin)) {
+      // Half storage: each value must be the primary's rounded to half.
       std::vector<double> v(header->values.begin(), header->values.end());
-      sameValues(v, name + ".h");
+      sameValues(v, name + ".h", header->half);
     }
     if (err) {
       sameAxes(*err, name + ".err.exr");
@@ -485,7 +503,8 @@ class Checker {
         note(-table.errors[i * table.channels + c], "a negative error bound");
       }
       if (table.channels == 2)
-        note(table.values[2 * i] + table.values[2 * i + 1] - 1.0 - kSumSlack, "A + B > 1");
+        note(table.values[2 * i] + table.values[2 * i + 1] - 1.0 - kSumSlack - 2.0 * t.storageError,
+             "A + B > 1");
     }
     if (worst > 0.0) {
       Add(name, "range", CheckStatus::kFail, what + " by " + Short(worst) + " at " + Where(at),
@@ -655,7 +674,8 @@ class Checker {
     for (int x = 0; x < t.table.width(); ++x) {
       const double f0 = t.table.x.TexelCenter(x);
       const double exact = f0 * (20.0 / 21.0) + 1.0 / 21.0;
-      const double excess = std::abs(t.table.values[x] - exact) - FloatRounding(exact) - 1e-15;
+      const double excess =
+          std::abs(t.table.values[x] - exact) - FloatRounding(exact) - t.storageError - 1e-15;
       if (excess > worst) worst = excess, at = At(t.table, f0, 0.0);
     }
     if (worst > 0.0)

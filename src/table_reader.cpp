@@ -1,5 +1,6 @@
 #include "lutbake/table_reader.h"
 
+#include <Imath/half.h>
 #include <ImfChannelList.h>
 #include <ImfDoubleAttribute.h>
 #include <ImfFrameBuffer.h>
@@ -126,8 +127,16 @@ HeaderValues ReadHeaderValues(const std::string &path) {
   out.width = static_cast<int>(width);
   out.height = static_cast<int>(height);
   out.channels = static_cast<int>(channels);
-  const size_t start = text.find("constexpr float kValues[");
-  if (start == std::string::npos) throw IoError(path + ": no 'constexpr float kValues[' array");
+  // kValues is float literals ("0.5f") or, with half storage, binary16 bit
+  // patterns ("0x3800").
+  size_t start = text.find("constexpr float kValues[");
+  if (start == std::string::npos) {
+    start = text.find("constexpr std::uint16_t kValues[");
+    out.half = start != std::string::npos;
+  }
+  if (start == std::string::npos)
+    throw IoError(path +
+                  ": no 'constexpr float kValues[' or 'constexpr std::uint16_t kValues[' array");
   const size_t open = text.find('{', start), close = text.find("};", start);
   if (open == std::string::npos || close == std::string::npos || close < open)
     throw IoError(path + ": kValues has no initialiser");
@@ -139,10 +148,19 @@ HeaderValues ReadHeaderValues(const std::string &path) {
     while (p < last && (*p == ' ' || *p == '\n' || *p == ',')) ++p;
     if (p >= last) break;
     char *end = nullptr;
-    const float v = std::strtof(p, &end);
-    if (end == p || *end != 'f') throw IoError(path + ": kValues holds something not a float");
-    out.values.push_back(v);
-    p = end + 1;
+    if (out.half) {
+      const unsigned long bits = std::strtoul(p, &end, 16);
+      if (end == p || bits > 0xffffu) throw IoError(path + ": kValues holds something not a half");
+      Imath::half h;
+      h.setBits(static_cast<unsigned short>(bits));
+      out.values.push_back(static_cast<float>(h));
+      p = end;
+    } else {
+      const float v = std::strtof(p, &end);
+      if (end == p || *end != 'f') throw IoError(path + ": kValues holds something not a float");
+      out.values.push_back(v);
+      p = end + 1;
+    }
   }
   if (out.values.size() != expected)
     throw IoError(path + ": kValues has " + std::to_string(out.values.size()) + " values, " +

@@ -183,6 +183,42 @@ TEST(Check, HeaderAloneIsChecked) {
   fs::remove_all(h);
 }
 
+// Half-storage headers: beside the EXR each value must be the EXR's rounded
+// to half (one half-ulp off is caught); alone, they pass with the storage
+// rounding they state added to their bounds.
+TEST(Check, HalfHeadersAreHeldToTheirRounding) {
+  const fs::path d = test::Scratch("check_half");
+  const test::CommandResult run =
+      Lutbake("bake --out " + d.string() + " --size 8 --tolerance 1e-6 --header-type half");
+  ASSERT_EQ(run.status, 0) << run.output;
+  CheckReport r = CheckBakedSet(d.string(), Quick());
+  EXPECT_TRUE(r.passed());
+  ASSERT_NE(Find(r, "dfg", "formats"), nullptr);
+  EXPECT_EQ(Find(r, "dfg", "formats")->status, CheckStatus::kPass);
+  // Headers alone: judged with their stated storage error.
+  const fs::path h = test::Scratch("check_half_only");
+  fs::create_directories(h);
+  for (const char *name : {"E.h", "Eavg.h", "Favg.h", "dfg.h"}) fs::copy_file(d / name, h / name);
+  r = CheckBakedSet(h.string(), Quick());
+  EXPECT_TRUE(r.passed());
+  // Move one half value by one unit in the last place: formats fails.
+  std::ifstream in(d / "E.h");
+  std::string text((std::istreambuf_iterator<char>(in)), {});
+  in.close();
+  const size_t at = text.find("0x", text.find("kValues["));
+  ASSERT_NE(at, std::string::npos);
+  const unsigned bits = static_cast<unsigned>(std::stoul(text.substr(at, 6), nullptr, 16));
+  char patched[8];
+  std::snprintf(patched, sizeof patched, "0x%04x", bits - 1);
+  text.replace(at, 6, patched);
+  std::ofstream(d / "E.h") << text;
+  r = CheckBakedSet(d.string(), Quick());
+  ASSERT_NE(Find(r, "E", "formats"), nullptr);
+  EXPECT_EQ(Find(r, "E", "formats")->status, CheckStatus::kFail);
+  fs::remove_all(d);
+  fs::remove_all(h);
+}
+
 TEST(Check, CommandLineExitsAndNamesTheFailure) {
   test::CommandResult run = Lutbake("check " + GoodBake().string() + " --points 16");
   EXPECT_EQ(run.status, 0) << run.output;

@@ -14,6 +14,7 @@
 #include "cli_run.h"
 #include "lutbake/bake.h"
 #include "lutbake/binary_format.h"
+#include "lutbake/table_reader.h"
 
 namespace lutbake {
 namespace {
@@ -157,6 +158,71 @@ TEST(CppHeaderWriter, CompilesWithWerrorAndLooksUpExactly) {
   std::ofstream(dir / "main.cpp")
       << "#include <cmath>\n#include <cstdio>\n#include \"E.h\"\n#include \"Eavg.h\"\n"
          "#include \"Favg.h\"\n#include \"dfg.h\"\nint main() {\n  int fail = 0;\n"
+      << checks << "  std::printf(\"%d failures\\n\", fail);\n  return fail == 0 ? 0 : 1;\n}\n";
+  for (const char *standard : {"c++17", "c++20"}) {
+    int status = -1;
+    const std::string command = test::CompileAndRun(dir, standard, &status);
+    EXPECT_EQ(status, 0) << command;
+  }
+  fs::remove_all(dir);
+}
+
+// Half storage: every value is the float32 value rounded to binary16 (read
+// back by an independent decoder, Imath's, and by the header's own), the
+// stated kStorageErrorMax covers the real rounding and stays within 2^-12,
+// and the header compiles as the float one does, with g++ and clang++.
+TEST(CppHeaderWriter, HalfStorageRoundsOnceAndSaysBy) {
+  const fs::path dir = TempDir("header_half");
+  WriteOptions options;
+  options.headerStorage = HeaderStorage::kHalf;
+  std::string checks;
+  char line[512];
+  for (TableKind kind : {TableKind::kE, TableKind::kDfg}) {
+    const Table t = SmallTable(kind, 10);
+    const std::string path = (dir / (std::string(TableName(kind)) + ".h")).string();
+    MakeCppHeaderWriter()->Write(t, path, options);
+    const HeaderValues h = ReadHeaderValues(path);
+    EXPECT_TRUE(h.half);
+    ASSERT_EQ(h.values.size(), t.values.size());
+    double worst = 0.0;
+    for (size_t i = 0; i < t.values.size(); ++i) {
+      EXPECT_EQ(static_cast<double>(h.values[i]), RoundToHalf(t.values[i])) << i;
+      worst = std::max(worst, std::abs(static_cast<double>(h.values[i]) -
+                                       static_cast<double>(static_cast<float>(t.values[i]))));
+    }
+    const std::string *stated = nullptr;
+    for (const auto &[key, value] : h.metadata)
+      if (key == "storageErrorMax") stated = &value;
+    ASSERT_NE(stated, nullptr);
+    EXPECT_EQ(std::stod(*stated), worst);
+    EXPECT_LE(worst, 0x1p-12);
+    EXPECT_GT(worst, 0.0);
+    for (int y = 0; y < t.height(); ++y)
+      for (int x = 0; x < t.width(); ++x)
+        for (int c = 0; c < t.channels; ++c) {
+          const float fx = static_cast<float>((x + 0.5) / t.width());
+          const float fy = static_cast<float>((y + 0.5) / t.height());
+          const float expected = static_cast<float>(RoundToHalf(t.value(x, y, c)));
+          if (kind == TableKind::kDfg)
+            std::snprintf(line, sizeof line,
+                          "  fail += lutbake_luts::lookup_dfg(%.9gf, %.9gf)[%d] != %af;\n", fx, fy,
+                          c, static_cast<double>(expected));
+          else
+            std::snprintf(line, sizeof line,
+                          "  fail += lutbake_luts::lookup_E(%.9gf, %.9gf) != %af;\n", fx, fy,
+                          static_cast<double>(expected));
+          checks += line;
+        }
+  }
+  // Subnormal halves and zero decode exactly too.
+  checks +=
+      "  fail += lutbake_luts::E_table::HalfToFloat(0x0001) != 0x1p-24f;\n"
+      "  fail += lutbake_luts::E_table::HalfToFloat(0x03ff) != 0x3ffp-24f;\n"
+      "  fail += lutbake_luts::E_table::HalfToFloat(0x0000) != 0.0f;\n"
+      "  fail += lutbake_luts::E_table::HalfToFloat(0x3c00) != 1.0f;\n"
+      "  fail += lutbake_luts::E_table::HalfToFloat(0x3555) != 0x1.554p-2f;\n";
+  std::ofstream(dir / "main.cpp")
+      << "#include <cstdio>\n#include \"E.h\"\n#include \"dfg.h\"\nint main() {\n  int fail = 0;\n"
       << checks << "  std::printf(\"%d failures\\n\", fail);\n  return fail == 0 ? 0 : 1;\n}\n";
   for (const char *standard : {"c++17", "c++20"}) {
     int status = -1;

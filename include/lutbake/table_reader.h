@@ -18,10 +18,12 @@ namespace lutbake {
 // table. `errors` is left empty: an EXR carries only errorMax.
 Table ReadExrTable(const std::string &path);
 
-// The storage of a generated header: its sizes, kValues as written, and
+// The storage of a generated header: its sizes, kValues as written (float,
+// or half bit patterns decoded), and
 // the metadata repeated in its opening comment ("//   key: value" lines).
 struct HeaderValues {
   int width = 0, height = 0, channels = 0;
+  bool half = false;          // half storage: values are the decoded halves
   std::vector<float> values;
   std::vector<std::pair<std::string, std::string>> metadata;
 };

@@ -19,9 +19,20 @@ class IoError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// How a generated header stores its values: float (exact float32, as the
+// EXR and .bin hold them) or IEEE 754 half (binary16 bit patterns in
+// std::uint16_t, rounded to nearest even: half the bytes, and an extra error
+// the header states, at most 2^-12 = 2.4e-4 for values in [0, 1]).
+enum class HeaderStorage { kFloat, kHalf };
+
 struct WriteOptions {
   std::string headerNamespace = "lutbake_luts";
+  HeaderStorage headerStorage = HeaderStorage::kFloat;
 };
+
+// A value as half storage holds it: rounded to binary16 (nearest even) and
+// widened back, exactly as the header's decoder returns it.
+double RoundToHalf(double value);
 
 class TableWriter {
  public:

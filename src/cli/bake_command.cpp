@@ -71,6 +71,12 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
   app.add_option("--namespace", o.headerNamespace, "Namespace of the generated C++ headers")
       ->capture_default_str()
       ->check(CppNamespace());
+  app.add_option("--header-type", o.headerType,
+                 "Storage of the values in T.h: float (exact float32) or half (IEEE binary16 in "
+                 "uint16_t: half the bytes, adds at most 2^-12 for values in [0, 1], stated in "
+                 "the header)")
+      ->capture_default_str()
+      ->check(OneOf({"float", "half"}));
   app.add_flag("--json", o.json, "Print the summary as one JSON object on stdout");
   AddSceneOptions(app, o.scene);
   app.add_flag("--skip-unsupported", o.skipUnsupported,
@@ -185,6 +191,8 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
     AtomicOutputSet output;
     WriteOptions writeOptions;
     writeOptions.headerNamespace = o.headerNamespace;
+    writeOptions.headerStorage =
+        o.headerType == "half" ? HeaderStorage::kHalf : HeaderStorage::kFloat;
     std::vector<std::string> unreached;
     for (const BakeJob &job : jobs) {
       BakeStats stats;

@@ -23,6 +23,7 @@ struct BakeOptions {
   int threads = 0;  // 0: all cores
   std::string formats = "exr,bin,header";
   std::string headerNamespace = "lutbake_luts";
+  std::string headerType = "float";
   bool json = false;
   SceneOptions scene;  // --scene / --manifest: bake a plan
   bool skipUnsupported = false;
