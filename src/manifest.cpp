@@ -81,18 +81,14 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
 
   if (const Json *v = Member(m, "roughness")) {
     const ParameterUse r = Parameter(*v, place.Child("roughness"), 0.0, 1.0);
-    const auto snap = [&](double x) {
-      if (x > 0.0 && x < 1e-12) {
-        out.notes.push_back("roughness " + json_input::Describe(Json(x)) +
-                            " is below 1e-12: baked as the mirror, r = 0");
-        return 0.0;
-      }
-      return x;
-    };
+    const auto snap = [&](double x) { return SnapToMirror(x, out, "roughness"); };
     if (r.range())
       out.roughness.push_back({"base", snap(r.min), snap(r.max)});
     else
-      for (double x : r.values) out.roughness.push_back({"base", snap(x), snap(x)});
+      for (double x : r.values) {
+        const double exact = snap(x);
+        out.roughness.push_back({"base", exact, exact});
+      }
   } else if (!out.unlit) {
     place.Fail("no \"roughness\": give a number, a list or {\"min\", \"max\"} in [0, 1]");
   }

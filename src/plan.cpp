@@ -34,7 +34,6 @@ struct Uses {
     else
       for (double v : p.values) exact.insert(v);
   }
-  bool empty() const { return exact.empty() && ranges.empty(); }
 
   // What a table must cover, and the axis that covers it: listed when every
   // use is exact and there are few, else linear over the hull with

@@ -72,16 +72,6 @@ double Factor(const Json &parent, const char *key, const Place &place, double fa
   return v ? json_input::Number(*v, place.Child(key), lo, hi) : fallback;
 }
 
-// Roughness below 1e-12 (alpha below 1e-24) is the mirror to within 1e-24:
-// lutbake bakes it as r = 0 (bake.h, kMinimumAlpha).
-double SnapMirror(double r, MaterialSpec &m, const std::string &what) {
-  if (r > 0.0 && r < 1e-12) {
-    m.notes.push_back(what + " " + FormatDouble(r) + " is below 1e-12: baked as the mirror, r = 0");
-    return 0.0;
-  }
-  return r;
-}
-
 struct Extension {
   const char *name;
   const char *factor;  // the factor that switches it off at 0 (with no texture)
@@ -156,7 +146,7 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
     json_input::RequireObject(*sg, at);
     const double glossiness = Factor(*sg, "glossinessFactor", at, 1.0);
     const bool texture = Texture(*sg, "specularGlossinessTexture", at);
-    const double r = SnapMirror(1.0 - glossiness, out, "roughness 1 - glossinessFactor");
+    const double r = SnapToMirror(1.0 - glossiness, out, "roughness 1 - glossinessFactor");
     out.roughness.push_back({"base", r, texture ? 1.0 : r});
     out.notes.push_back("KHR_materials_pbrSpecularGlossiness: roughness = 1 - glossiness");
   } else {
@@ -205,7 +195,7 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
       out.fresnel.schlickF0.push_back(std::min(f0 * c, 1.0) * specularFactor);
     out.fresnel.schlickF90 = specularFactor;
     if (lobe) {
-      const double r = SnapMirror(roughnessFactor, out, "roughnessFactor");
+      const double r = SnapToMirror(roughnessFactor, out, "roughnessFactor");
       out.roughness.push_back({"base", roughnessTexture ? 0.0 : r, r});
     }
   }
@@ -220,7 +210,7 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
     Texture(*coat, "clearcoatNormalTexture", at);
     // clearcoatTexture multiplies clearcoatFactor: factor 0 is off either way.
     if (coatFactor > 0.0) {
-      const double r = SnapMirror(coatRoughness, out, "clearcoatRoughnessFactor");
+      const double r = SnapToMirror(coatRoughness, out, "clearcoatRoughnessFactor");
       out.roughness.push_back({"clearcoat", coatRoughnessTexture ? 0.0 : r, r});
     } else {
       out.notes.push_back(std::string("KHR_materials_clearcoat with clearcoatFactor 0") +

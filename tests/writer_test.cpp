@@ -29,6 +29,23 @@ fs::path TempDir(const std::string &name) {
   return dir;
 }
 
+// Writes dir/main.cpp (the includes, then `checks` as statements that add
+// to `fail`) and expects it to compile as an engine would and report no
+// failure, in C++17 and C++20.
+void ExpectHeadersPass(const fs::path &dir, const std::string &includes,
+                       const std::string &checks) {
+  std::ofstream(dir / "main.cpp") << "#include <cmath>\n#include <cstdio>\n"
+                                  << includes << "int main() {\n  int fail = 0;\n"
+                                  << checks
+                                  << "  std::printf(\"%d failures\\n\", fail);\n"
+                                     "  return fail == 0 ? 0 : 1;\n}\n";
+  for (const char *standard : {"c++17", "c++20"}) {
+    int status = -1;
+    const std::string command = test::CompileAndRun(dir, standard, &status);
+    EXPECT_EQ(status, 0) << command;
+  }
+}
+
 Table SmallTable(TableKind kind, int size = 8) {
   BakeSettings s;
   s.sizeE = s.sizeEavg = s.sizeFavg = s.sizeDfg = size;
@@ -155,15 +172,10 @@ TEST(CppHeaderWriter, CompilesWithWerrorAndLooksUpExactly) {
                 static_cast<float>(e.value(0, 9)));
   checks += line;
   checks += "  fail += !(engine::luts::lookup_E(std::nanf(\"\"), 0.5f) >= 0.0f);\n";
-  std::ofstream(dir / "main.cpp")
-      << "#include <cmath>\n#include <cstdio>\n#include \"E.h\"\n#include \"Eavg.h\"\n"
-         "#include \"Favg.h\"\n#include \"dfg.h\"\nint main() {\n  int fail = 0;\n"
-      << checks << "  std::printf(\"%d failures\\n\", fail);\n  return fail == 0 ? 0 : 1;\n}\n";
-  for (const char *standard : {"c++17", "c++20"}) {
-    int status = -1;
-    const std::string command = test::CompileAndRun(dir, standard, &status);
-    EXPECT_EQ(status, 0) << command;
-  }
+  ExpectHeadersPass(dir,
+                    "#include \"E.h\"\n#include \"Eavg.h\"\n#include \"Favg.h\"\n#include "
+                    "\"dfg.h\"\n",
+                    checks);
   fs::remove_all(dir);
 }
 
@@ -221,14 +233,7 @@ TEST(CppHeaderWriter, HalfStorageRoundsOnceAndSaysBy) {
       "  fail += lutbake_luts::E_table::HalfToFloat(0x0000) != 0.0f;\n"
       "  fail += lutbake_luts::E_table::HalfToFloat(0x3c00) != 1.0f;\n"
       "  fail += lutbake_luts::E_table::HalfToFloat(0x3555) != 0x1.554p-2f;\n";
-  std::ofstream(dir / "main.cpp")
-      << "#include <cstdio>\n#include \"E.h\"\n#include \"dfg.h\"\nint main() {\n  int fail = 0;\n"
-      << checks << "  std::printf(\"%d failures\\n\", fail);\n  return fail == 0 ? 0 : 1;\n}\n";
-  for (const char *standard : {"c++17", "c++20"}) {
-    int status = -1;
-    const std::string command = test::CompileAndRun(dir, standard, &status);
-    EXPECT_EQ(status, 0) << command;
-  }
+  ExpectHeadersPass(dir, "#include \"E.h\"\n#include \"dfg.h\"\n", checks);
   fs::remove_all(dir);
 }
 

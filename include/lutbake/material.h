@@ -76,4 +76,9 @@ struct MaterialSpec {
   std::vector<std::string> notes;
 };
 
+// Perceptual roughness below 1e-12 (alpha below kMinimumAlpha = 1e-24, the
+// smallest the integrators take) is the mirror to within 1e-24: it is baked
+// as r = 0, and a note on `material` says so. Returns the roughness to bake.
+double SnapToMirror(double perceptualRoughness, MaterialSpec &material, const std::string &what);
+
 }  // namespace lutbake
