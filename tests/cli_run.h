@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace lutbake::test {
 
@@ -40,19 +41,39 @@ inline std::filesystem::path Scratch(const std::string &name) {
   return dir;
 }
 
+// The compilers an engine may build generated headers with: the suite's own
+// C++ compiler and Debian's clang++ (scripts/setup.sh installs it; CMake
+// finds it as LUTBAKE_CLANGXX). A missing one is returned as its
+// "...-NOTFOUND" name, so that compiling with it fails loudly.
+inline std::vector<std::string> HeaderCompilers() {
+  return {LUTBAKE_TEST_CXX, LUTBAKE_TEST_CLANGXX};
+}
+
 // Compiles dir/main.cpp against the headers in dir as an engine would
-// (-Wall -Wextra -Wpedantic -Werror -fno-exceptions) and runs it. Returns
-// the shell command, which the caller prints on failure, and sets *status to
-// the system() status (0: compiled and the program returned 0).
-inline std::string CompileAndRun(const std::filesystem::path &dir, const std::string &standard,
-                                 int *status) {
-  const std::string exe = (dir / ("main_" + standard)).string();
-  const std::string command = std::string(LUTBAKE_TEST_CXX) + " -std=" + standard +
-                              " -Wall -Wextra -Wpedantic -Werror -fno-exceptions -I" +
-                              dir.string() + " " + (dir / "main.cpp").string() + " -o " + exe +
-                              " && " + exe;
+// (-Wall -Wextra -Wpedantic -Werror -fno-exceptions) with `compiler` and
+// runs it. Returns the shell command, which the caller prints on failure,
+// and sets *status to the system() status (0: compiled and the program
+// returned 0).
+inline std::string CompileAndRun(const std::filesystem::path &dir, const std::string &compiler,
+                                 const std::string &standard, int *status) {
+  const std::string tag = std::filesystem::path(compiler).filename().string() + "_" + standard;
+  const std::string exe = (dir / ("main_" + tag)).string();
+  const std::string command =
+      compiler + " -std=" + standard + " -Wall -Wextra -Wpedantic -Werror -fno-exceptions -I" +
+      dir.string() + " " + (dir / "main.cpp").string() + " -o " + exe + " && " + exe;
   *status = std::system(command.c_str());
   return command;
 }
+
+// CompileAndRun with every compiler of HeaderCompilers() and each standard;
+// one EXPECT per build.
+#define LUTBAKE_EXPECT_COMPILES_AND_RUNS(dir, ...)                             \
+  for (const std::string &compiler_ : ::lutbake::test::HeaderCompilers())      \
+    for (const char *standard_ : {__VA_ARGS__}) {                              \
+      int status_ = -1;                                                        \
+      const std::string command_ =                                             \
+          ::lutbake::test::CompileAndRun(dir, compiler_, standard_, &status_); \
+      EXPECT_EQ(status_, 0) << command_;                                       \
+    }
 
 }  // namespace lutbake::test

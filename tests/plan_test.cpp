@@ -311,8 +311,9 @@ TEST(PlanCli, BakeWritesExactlyThePlanAndChecks) {
   std::vector<std::string> files;
   for (const auto &e : fs::directory_iterator(out)) files.push_back(e.path().filename());
   std::sort(files.begin(), files.end());
-  EXPECT_EQ(files, (std::vector<std::string>{"E.bin", "E.exr", "E.h", "Eavg.bin", "Eavg.exr",
-                                             "Eavg.h", "Favg.h", "dfg.bin", "dfg.exr", "dfg.h"}));
+  EXPECT_EQ(files,
+            (std::vector<std::string>{"E.bin", "E.exr", "E.h", "Eavg.bin", "Eavg.exr", "Eavg.h",
+                                      "Favg.h", "dfg.bin", "dfg.exr", "dfg.h", "kulla_conty.h"}));
   const Table e = ReadExrTable((out / "E.exr").string());
   EXPECT_TRUE(e.y.listed());
   EXPECT_EQ(e.y.nodes, (std::vector<double>{0.25, 0.5}));
@@ -352,9 +353,7 @@ TEST(PlanCli, BakeWritesExactlyThePlanAndChecks) {
       << checks
       << "  std::printf(\"%d failures\\n\", fail);\n"
          "  return fail == 0 ? 0 : 1;\n}\n";
-  int status = -1;
-  const std::string command = test::CompileAndRun(out, "c++17", &status);
-  EXPECT_EQ(status, 0) << command;
+  LUTBAKE_EXPECT_COMPILES_AND_RUNS(out, "c++17");
   fs::remove_all(out);
 }
 
@@ -373,7 +372,8 @@ TEST(PlanCli, VariantsBakeCheckAndCompileTogether) {
       includes += "#include \"" + e.path().filename().string() + "\"\n";
       ++headers;
     }
-  EXPECT_EQ(headers, 11u);  // 3 x (E, Eavg, dfg) + Favg_dielectric + Favg_conductor
+  // 3 x (E, Eavg, dfg, kulla_conty) + Favg_dielectric + Favg_conductor
+  EXPECT_EQ(headers, 14u);
   const auto check = Lutbake("check " + out.string() + " --points 16 --furnace-grid 17");
   EXPECT_EQ(check.status, 0) << check.output;
   for (const char *subject : {"E_beckmann", "dfg_separable", "Favg_conductor", "E+Eavg_beckmann"})
@@ -385,10 +385,9 @@ TEST(PlanCli, VariantsBakeCheckAndCompileTogether) {
          "  const float b = lutbake_luts::lookup_dfg_separable(0.5f, 0.2f)[0];\n"
          "  const float c = lutbake_luts::lookup_Favg_dielectric(1.5f);\n"
          "  const float d = lutbake_luts::lookup_Favg_conductor(0.47f, 2.83f);\n"
-         "  return a > 0.0f && b > 0.0f && c > 0.0f && d > 0.0f ? 0 : 1;\n}\n";
-  int status = -1;
-  const std::string command = test::CompileAndRun(out, "c++17", &status);
-  EXPECT_EQ(status, 0) << command;
+         "  const float e = lutbake_luts::f_ms_beckmann(0.5f, 0.5f, 0.3f);\n"
+         "  return a > 0.0f && b > 0.0f && c > 0.0f && d > 0.0f && e > 0.0f ? 0 : 1;\n}\n";
+  LUTBAKE_EXPECT_COMPILES_AND_RUNS(out, "c++17");
   fs::remove_all(out);
 }
 

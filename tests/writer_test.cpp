@@ -14,6 +14,7 @@
 #include "cli_run.h"
 #include "lutbake/bake.h"
 #include "lutbake/binary_format.h"
+#include "lutbake/lookup.h"
 #include "lutbake/table_reader.h"
 
 namespace lutbake {
@@ -39,11 +40,7 @@ void ExpectHeadersPass(const fs::path &dir, const std::string &includes,
                                   << checks
                                   << "  std::printf(\"%d failures\\n\", fail);\n"
                                      "  return fail == 0 ? 0 : 1;\n}\n";
-  for (const char *standard : {"c++17", "c++20"}) {
-    int status = -1;
-    const std::string command = test::CompileAndRun(dir, standard, &status);
-    EXPECT_EQ(status, 0) << command;
-  }
+  LUTBAKE_EXPECT_COMPILES_AND_RUNS(dir, "c++17", "c++20");
 }
 
 Table SmallTable(TableKind kind, int size = 8) {
@@ -234,6 +231,101 @@ TEST(CppHeaderWriter, HalfStorageRoundsOnceAndSaysBy) {
       "  fail += lutbake_luts::E_table::HalfToFloat(0x3c00) != 1.0f;\n"
       "  fail += lutbake_luts::E_table::HalfToFloat(0x3555) != 0x1.554p-2f;\n";
   ExpectHeadersPass(dir, "#include \"E.h\"\n#include \"dfg.h\"\n", checks);
+  fs::remove_all(dir);
+}
+
+// kulla_conty.h: f_ms and F_ms equal their stated formulas evaluated with the
+// library's own lookups of the same tables, and the compensated white
+// furnace E(mu_o) + integral f_ms cos, integrated in the compiled program
+// exactly (two Gauss points on each piece where the interpolated E is
+// linear in mu), equals the library's closed form of the same sum,
+//   E(mu_o) + (1 - E(mu_o)) (1 - 2 integral L(mu) mu dmu) / (1 - E_avg),
+// with g++ and clang++, C++17 and C++20.
+TEST(CppHeaderWriter, KullaContyHelpersMatchTheirFormulas) {
+  const fs::path dir = TempDir("header_kc");
+  BakeSettings s;
+  s.sizeE = s.sizeEavg = 12;
+  s.tolerance = 1e-7;
+  s.commandLine = "lutbake bake --test";
+  const Table e = BakeTable(TableKind::kE, s), eavg = BakeTable(TableKind::kEavg, s);
+  const WriteOptions options;
+  MakeCppHeaderWriter()->Write(e, (dir / "E.h").string(), options);
+  MakeCppHeaderWriter()->Write(eavg, (dir / "Eavg.h").string(), options);
+  WriteKullaContyHeader((dir / "kulla_conty.h").string(), options, "", {});
+  std::string checks;
+  char line[512];
+  const auto escape = [&](double mu, double r) { return std::max(0.0, 1.0 - Lookup(e, mu, r)); };
+  const double pi = 3.14159265358979323846;
+  for (double r : {0.0, 0.04, 0.3, 0.55, 1.0}) {
+    const double lost = 1.0 - Lookup(eavg, r, 0.0);
+    ASSERT_GT(lost, 0.0) << r;
+    for (double muO : {0.0, 0.02, 0.37, 0.8, 1.0})
+      for (double muI : {0.0, 0.11, 0.5, 0.96}) {
+        const double a = escape(muO, r), b = escape(muI, r);
+        const double fms = a * b / (pi * lost);
+        // The header's lookups return floats: each of 1 - E(mu_o), 1 - E(mu_i)
+        // and 1 - E_avg is off by up to 2^-24 from rounding a value near 1,
+        // which the ratio amplifies where they are small (smooth surfaces).
+        const double eps = 0x1p-23;
+        const double bound =
+            fms * eps * ((a > 0 ? 1 / a : 0) + (b > 0 ? 1 / b : 0) + 1 / lost) + 1e-9;
+        std::snprintf(line, sizeof line,
+                      "  fail += Far(lutbake_luts::f_ms(%#.9gf, %#.9gf, %#.9gf), %.17g, %.17g, "
+                      "__LINE__);\n",
+                      muO, muI, r, fms, bound);
+        checks += line;
+      }
+    for (double favg : {0.0, 0.04, 0.5, 0.95, 1.0}) {
+      const double ea = 1.0 - lost;
+      const double fresnel = favg * favg * ea / (1.0 - favg * (1.0 - ea));
+      std::snprintf(
+          line, sizeof line,
+          "  fail += Far(lutbake_luts::fresnel_ms(%#.9gf, %#.9gf), %.17g, 1e-6, __LINE__);\n", favg,
+          r, fresnel);
+      checks += line;
+    }
+    // Out-of-range F_avg is clamped: 1.5 acts as 1 (F_ms = 1), -0.5 as 0.
+    std::snprintf(line, sizeof line,
+                  "  fail += Far(lutbake_luts::fresnel_ms(1.5f, %#.9gf), 1.0, 1e-6, __LINE__);\n"
+                  "  fail += Far(lutbake_luts::fresnel_ms(-0.5f, %#.9gf), 0.0, 0.0, __LINE__);\n",
+                  r, r);
+    checks += line;
+    // The furnace, against the library's closed form of the same sum.
+    const double muAverage = LookupMuAverage(e, e.values, r, 0);
+    for (double muO : {0.0, 0.02, 0.37, 1.0}) {
+      const double eo = Lookup(e, muO, r);
+      const double furnace = eo + std::max(0.0, 1.0 - eo) * (1.0 - muAverage) / lost;
+      std::snprintf(line, sizeof line,
+                    "  fail += Far(Furnace(%#.9gf, %#.9gf), %.17g, 2e-5, __LINE__);\n", muO, r,
+                    furnace);
+      checks += line;
+      // The sum itself is 1 up to how well the interpolated E averages to
+      // the exact E_avg; at these sizes and this tolerance, to 2e-3.
+      EXPECT_NEAR(furnace, 1.0, 2e-3) << "mu_o " << muO << " r " << r;
+    }
+  }
+  const std::string furnace = R"(
+// 1 (and a note naming the line) when |got - expected| > bound.
+int Far(double got, double expected, double bound, int line) {
+  if (std::fabs(got - expected) <= bound) return 0;
+  std::printf("line %d: %.9g, expected %.9g within %.3g\n", line, got, expected, bound);
+  return 1;
+}
+// E(mu_o) + 2 pi integral_0^1 f_ms(mu_o, mu_i) mu_i dmu_i, with two Gauss
+// points on each piece between the 12 texel centres (and the clamped ends).
+double Furnace(float muO, float r) {
+  const int n = 12;
+  double sum = 0.0;
+  for (int k = 0; k <= n; ++k) {
+    const double a = k == 0 ? 0.0 : (k - 0.5) / n, b = k == n ? 1.0 : (k + 0.5) / n;
+    const double half = 0.5 * (b - a), mid = 0.5 * (a + b), g = half / std::sqrt(3.0);
+    for (double mu : {mid - g, mid + g})
+      sum += half * mu * lutbake_luts::f_ms(muO, static_cast<float>(mu), r);
+  }
+  return lutbake_luts::lookup_E(muO, r) + 2.0 * 3.14159265358979323846 * sum;
+}
+)";
+  ExpectHeadersPass(dir, "#include \"kulla_conty.h\"\n" + furnace, checks);
   fs::remove_all(dir);
 }
 

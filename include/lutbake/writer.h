@@ -55,6 +55,13 @@ std::unique_ptr<TableWriter> MakeCppHeaderWriter();
 void WriteSchlickFavgHeader(const std::string &path, const WriteOptions &options,
                             const std::vector<std::pair<std::string, std::string>> &metadata);
 
+// kulla_conty<suffix>.h, next to E<suffix>.h and Eavg<suffix>.h: the
+// Kulla-Conty lobe f_ms<suffix>(mu_o, mu_i, r) and its Fresnel colour term
+// fresnel_ms<suffix>(Favg, r), with the formulas stated in its comment.
+void WriteKullaContyHeader(const std::string &path, const WriteOptions &options,
+                           const std::string &suffix,
+                           const std::vector<std::pair<std::string, std::string>> &metadata);
+
 // The writer for a --format name, or nullptr.
 std::unique_ptr<TableWriter> MakeWriter(const std::string &formatName);
 

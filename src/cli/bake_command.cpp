@@ -260,6 +260,25 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
       summary["tables"].push_back(entry);
       std::cerr << "Favg  closed form (every compensated material uses Schlick): Favg.h\n";
     }
+    // Kulla-Conty helpers wherever a header bake holds both E and E_avg of one
+    // model (E and Eavg, E_beckmann and Eavg_beckmann, ...).
+    for (const BakeJob &job : jobs) {
+      if (!headers || job.kind != TableKind::kE) continue;
+      const std::string suffix = job.name.substr(1);
+      const bool averaged = std::any_of(jobs.begin(), jobs.end(), [&](const BakeJob &other) {
+        return other.kind == TableKind::kEavg && other.name == "Eavg" + suffix;
+      });
+      if (!averaged) continue;
+      const std::string path =
+          (std::filesystem::path(o.outDir) / ("kulla_conty" + suffix + ".h")).string();
+      auto metadata = planMetadata;
+      metadata.insert(metadata.begin(), {"helpers", "Kulla-Conty f_ms and F_ms over E" + suffix +
+                                                        " and Eavg" + suffix});
+      metadata.emplace_back("lutbakeVersion", LutbakeVersion());
+      metadata.emplace_back("commandLine", commandLine);
+      WriteKullaContyHeader(output.Add(path), writeOptions, suffix, metadata);
+      summary["helpers"].push_back(path);
+    }
     if (!unreached.empty()) {
       std::cerr << "lutbake bake: --tolerance " << settings.tolerance << " not reached within "
                 << "--max-samples " << settings.maxSamples << " in " << JoinNames(unreached)
