@@ -48,7 +48,9 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
   app.add_option("--out", o.outDir, "Output directory (created if missing)")
       ->required()
       ->type_name("DIR");
-  app.add_option("--tables", o.tables, "Tables to bake")
+  app.add_option("--tables", o.tables,
+                 "Tables to bake (with --scene: which of the planned tables; one the plan "
+                 "leaves out is an error)")
       ->capture_default_str()
       ->check(ListOf({"E", "Eavg", "Favg", "dfg"}));
   AddModelOptions(app, o.ndf, o.smith);
@@ -100,9 +102,10 @@ struct BakeJob {
   std::vector<std::pair<std::string, std::string>> metadata;
 };
 
-// Options that choose tables or models, which a plan decides instead.
+// Options that choose models, which a plan decides instead. (--tables is
+// accepted: with a plan it selects among the planned tables.)
 int PlanConflicts(CLI::App &app) {
-  for (const char *flag : {"--tables", "--ndf", "--smith", "--fresnel"})
+  for (const char *flag : {"--ndf", "--smith", "--fresnel"})
     if (app.count(flag) > 0) {
       std::cerr << "lutbake bake: " << flag
                 << " cannot be combined with --scene or --manifest: the plan chooses the tables "
@@ -146,6 +149,39 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
         std::cerr << "  " << u.material << ": " << u.feature << "\n";
       std::cerr << "Add --skip-unsupported to bake the rest of the plan without them.\n";
       return 1;
+    }
+    // --tables with a plan: bake only the planned tables of those kinds (every
+    // variant of each), and fail, saying why, if the plan leaves one out, so
+    // that a build that includes T.h stops here rather than at its #include.
+    if (app.count("--tables") > 0) {
+      const std::vector<std::string> wanted = SplitList(o.tables);
+      const auto isWanted = [&](TableKind kind) {
+        return std::find(wanted.begin(), wanted.end(), TableName(kind)) != wanted.end();
+      };
+      std::vector<std::string> missing;
+      for (const std::string &name : wanted) {
+        const TableKind kind = ParseTable(name);
+        const bool planned = std::any_of(plan.tables.begin(), plan.tables.end(),
+                                         [&](const PlannedTable &t) { return t.kind == kind; }) ||
+                             (kind == TableKind::kFavg && plan.schlickFavgFunction);
+        if (planned) continue;
+        std::string reason = "not needed by the plan";
+        for (const OmittedTable &t : plan.omitted)
+          if (t.name == name) reason = t.reason;
+        missing.push_back(name + ": " + reason);
+      }
+      if (!missing.empty()) {
+        std::cerr << "lutbake bake: --tables " << o.tables
+                  << " asks for tables the plan leaves out; nothing written:\n";
+        for (const std::string &m : missing) std::cerr << "  " << m << "\n";
+        std::cerr << "Drop them from --tables, or change the scene, manifest or --no-ibl / "
+                     "--no-compensation (see lutbake plan).\n";
+        return 1;
+      }
+      plan.tables.erase(std::remove_if(plan.tables.begin(), plan.tables.end(),
+                                       [&](const PlannedTable &t) { return !isWanted(t.kind); }),
+                        plan.tables.end());
+      if (!isWanted(TableKind::kFavg)) plan.schlickFavgFunction = false;
     }
     if (plan.empty()) {
       std::cerr << "lutbake bake: the plan needs no tables; nothing written.\n";
