@@ -108,8 +108,8 @@ int PlanConflicts(CLI::App &app) {
   for (const char *flag : {"--ndf", "--smith", "--fresnel"})
     if (app.count(flag) > 0) {
       std::cerr << "lutbake bake: " << flag
-                << " cannot be combined with --scene or --manifest: the plan chooses the tables "
-                   "and their models (see lutbake plan)\n";
+                << " cannot be combined with --scene or --manifest: the plan chooses the "
+                   "models (see lutbake plan)\n";
       return 2;
     }
   return 0;
