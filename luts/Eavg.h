@@ -41,6 +41,19 @@ namespace Eavg_table {
 inline constexpr std::size_t kWidth = 32;
 inline constexpr std::size_t kHeight = 1;
 inline constexpr std::size_t kChannels = 1;
+// What the table holds and how it is laid out (also in the comment above).
+inline constexpr const char *kTable = "Eavg";
+inline constexpr const char *kNdf = "ggx";
+inline constexpr const char *kSmith = "correlated";
+inline constexpr const char *kFresnel = "none (F = 1)";
+inline constexpr const char *kXAxis = "perceptualRoughness";
+inline constexpr const char *kXMapping = "linear";
+inline constexpr bool kAlphaIsPerceptualRoughnessSquared = true;
+// Texel i of an axis of n texels holds the value at u = (i + kTexelCentre) / n.
+inline constexpr double kTexelCentre = 0.5;
+inline constexpr const char *kChannelNames[kChannels] = {"Eavg"};
+inline constexpr const char *kLutbakeVersion = "0.1.0";
+inline constexpr const char *kCommandLine = "lutbake bake --out luts --tolerance 1e-6 --format exr,bin,header";
 inline constexpr double kXMin = 0.0;
 inline constexpr double kXMax = 1.0;
 inline constexpr double kErrorMax = 2.124427121619665e-07;

@@ -40,6 +40,18 @@ namespace Favg_table {
 inline constexpr std::size_t kWidth = 32;
 inline constexpr std::size_t kHeight = 1;
 inline constexpr std::size_t kChannels = 1;
+// What the table holds and how it is laid out (also in the comment above).
+inline constexpr const char *kTable = "Favg";
+inline constexpr const char *kNdf = "none";
+inline constexpr const char *kSmith = "none";
+inline constexpr const char *kFresnel = "schlick";
+inline constexpr const char *kXAxis = "F0";
+inline constexpr const char *kXMapping = "linear";
+// Texel i of an axis of n texels holds the value at u = (i + kTexelCentre) / n.
+inline constexpr double kTexelCentre = 0.5;
+inline constexpr const char *kChannelNames[kChannels] = {"Favg"};
+inline constexpr const char *kLutbakeVersion = "0.1.0";
+inline constexpr const char *kCommandLine = "lutbake bake --out luts --tolerance 1e-6 --format exr,bin,header";
 inline constexpr double kXMin = 0.0;
 inline constexpr double kXMax = 1.0;
 inline constexpr double kErrorMax = 1.1102230246251565e-16;

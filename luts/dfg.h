@@ -43,6 +43,21 @@ namespace dfg_table {
 inline constexpr std::size_t kWidth = 128;
 inline constexpr std::size_t kHeight = 128;
 inline constexpr std::size_t kChannels = 2;
+// What the table holds and how it is laid out (also in the comment above).
+inline constexpr const char *kTable = "dfg";
+inline constexpr const char *kNdf = "ggx";
+inline constexpr const char *kSmith = "correlated";
+inline constexpr const char *kFresnel = "none (F = 1)";
+inline constexpr const char *kXAxis = "mu";
+inline constexpr const char *kXMapping = "linear";
+inline constexpr const char *kYAxis = "perceptualRoughness";
+inline constexpr const char *kYMapping = "linear";
+inline constexpr bool kAlphaIsPerceptualRoughnessSquared = true;
+// Texel i of an axis of n texels holds the value at u = (i + kTexelCentre) / n.
+inline constexpr double kTexelCentre = 0.5;
+inline constexpr const char *kChannelNames[kChannels] = {"A", "B"};
+inline constexpr const char *kLutbakeVersion = "0.1.0";
+inline constexpr const char *kCommandLine = "lutbake bake --out luts --tolerance 1e-6 --format exr,bin,header";
 inline constexpr double kXMin = 0.0;
 inline constexpr double kXMax = 1.0;
 inline constexpr double kYMin = 0.0;

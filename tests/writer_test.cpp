@@ -169,9 +169,31 @@ TEST(CppHeaderWriter, CompilesWithWerrorAndLooksUpExactly) {
                 static_cast<float>(e.value(0, 9)));
   checks += line;
   checks += "  fail += !(engine::luts::lookup_E(std::nanf(\"\"), 0.5f) >= 0.0f);\n";
+  // The conventions as constants, checked at compile time, and a command
+  // line with quotes, a backslash and a newline kept exactly.
+  Table quoted = SmallTable(TableKind::kEavg, 3);
+  quoted.name = "Eavg_quoted";
+  for (auto &[key, value] : quoted.metadata)
+    if (key == "commandLine") value = "lutbake bake --out 'a \"b\"\\c'\n--tables Eavg";
+  MakeCppHeaderWriter()->Write(quoted, (dir / "Eavg_quoted.h").string(), options);
+  checks += R"(  namespace e = engine::luts::E_table;
+  namespace d = engine::luts::dfg_table;
+  static_assert(std::string_view(e::kXAxis) == "mu" && std::string_view(e::kXMapping) == "linear");
+  static_assert(std::string_view(e::kYAxis) == "perceptualRoughness");
+  static_assert(e::kAlphaIsPerceptualRoughnessSquared && e::kTexelCentre == 0.5);
+  static_assert(std::string_view(e::kNdf) == "ggx" && std::string_view(e::kSmith) == "correlated");
+  static_assert(std::string_view(d::kChannelNames[0]) == "A" &&
+                std::string_view(d::kChannelNames[1]) == "B");
+  static_assert(std::string_view(engine::luts::Favg_table::kXAxis) == "F0");
+  static_assert(std::string_view(e::kCommandLine) == "lutbake bake --test");
+  static_assert(std::string_view(engine::luts::Eavg_quoted_table::kCommandLine) ==
+                "lutbake bake --out 'a \"b\"\\c'\n--tables Eavg");
+)";
+  checks += "  static_assert(std::string_view(e::kLutbakeVersion) == \"" +
+            std::string(LutbakeVersion()) + "\");\n";
   ExpectHeadersPass(dir,
-                    "#include \"E.h\"\n#include \"Eavg.h\"\n#include \"Favg.h\"\n#include "
-                    "\"dfg.h\"\n",
+                    "#include <string_view>\n#include \"E.h\"\n#include \"Eavg.h\"\n#include "
+                    "\"Favg.h\"\n#include \"dfg.h\"\n#include \"Eavg_quoted.h\"\n",
                     checks);
   fs::remove_all(dir);
 }
