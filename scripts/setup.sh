@@ -8,7 +8,7 @@ if [ "$(id -u)" != 0 ]; then SUDO=sudo; fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
-  g++ clang cmake make pkg-config \
+  g++ clang cmake make ninja-build pkg-config \
   libopenexr-dev libimath-dev libopenimageio-dev openimageio-tools \
   libtbb-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev >/dev/null
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release

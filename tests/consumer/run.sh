@@ -1,22 +1,24 @@
 #!/usr/bin/env bash
 # Builds and runs the consumer (tests/consumer/) through one route:
-#   run.sh package      <compiler> <lutbake build dir> <scratch dir> [c++ standard]
+#   run.sh package      <compiler> <lutbake build dir> <scratch dir> [standard [generator]]
 #       cmake --install the build into <scratch>/prefix, then find_package
 #   run.sh subdirectory <compiler> <unused>            <scratch dir>
 #       add_subdirectory(<repo>) in the consumer's own build
 # Then checks that the bakes rerun exactly when their inputs change: not on
 # a second build, only scene_luts when its scene is touched, both when the
-# OPTIONS change.
+# OPTIONS change or (package route) the installed lutbake does.
 set -euo pipefail
-route=$1 compiler=$2 build=$3 scratch=$4 standard=${5:-17}
+# standard: 17, 20, ... or "default" (the compiler's own; lutbake_add_luts
+# must raise it); generator: a CMake generator name (default: Unix Makefiles).
+route=$1 compiler=$2 build=$3 scratch=$4 standard=${5:-default} generator=${6:-Unix Makefiles}
 here="$(cd "$(dirname "$0")" && pwd)"
 repo="$(cd "$here/../.." && pwd)"
 rm -rf "$scratch"
 mkdir -p "$scratch"
 cp "$repo/tests/data/plans/listed.gltf" "$scratch/scene.gltf"
-configure=(-S "$here" -B "$scratch/build" -DCMAKE_BUILD_TYPE=Release
-           -DCMAKE_CXX_COMPILER="$compiler" -DCMAKE_CXX_STANDARD="$standard"
-           -DLUTBAKE_CONSUMER_SCENE="$scratch/scene.gltf")
+configure=(-S "$here" -B "$scratch/build" -G "$generator" -DCMAKE_BUILD_TYPE=Release
+           -DCMAKE_CXX_COMPILER="$compiler" -DLUTBAKE_CONSUMER_SCENE="$scratch/scene.gltf")
+[ "$standard" = default ] || configure+=(-DCMAKE_CXX_STANDARD="$standard")
 case "$route" in
   package)
     cmake --install "$build" --prefix "$scratch/prefix" >/dev/null
@@ -54,7 +56,9 @@ expect_baked options_changed furnace scene_luts
 "$scratch/build/furnace" >/dev/null
 # The tables of the package route come from the installed CLI.
 if [ "$route" = package ]; then
-  grep -q "$scratch/prefix/bin/lutbake" "$scratch/build/CMakeFiles/furnace_lutbake_luts.dir/build.make" ||
+  grep -rq --include=build.make --include=build.ninja "$scratch/prefix/bin/lutbake" "$scratch/build" ||
     { echo "the bake does not use the installed lutbake"; exit 1; }
+  touch "$scratch/prefix/bin/lutbake"
+  expect_baked cli_touched furnace scene_luts
 fi
-echo "consumer ($route, $(basename "$compiler"), C++$standard): passed"
+echo "consumer ($route, $(basename "$compiler"), C++ $standard, $generator): passed"
