@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -39,6 +40,15 @@ inline std::filesystem::path Scratch(const std::string &name) {
       fs::temp_directory_path() / ("lutbake_cli_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   return dir;
+}
+
+// The names of the files in dir, sorted.
+inline std::vector<std::string> FileNames(const std::filesystem::path &dir) {
+  std::vector<std::string> names;
+  for (const auto &entry : std::filesystem::directory_iterator(dir))
+    names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 // The compilers an engine may build generated headers with: the suite's own

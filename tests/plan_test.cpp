@@ -308,10 +308,7 @@ TEST(PlanCli, BakeWritesExactlyThePlanAndChecks) {
   const auto r = Lutbake("bake --out " + out.string() + " --scene " + kPlans +
                          "listed.glb --size 16 --samples 4096");
   ASSERT_EQ(r.status, 0) << r.output;
-  std::vector<std::string> files;
-  for (const auto &e : fs::directory_iterator(out)) files.push_back(e.path().filename());
-  std::sort(files.begin(), files.end());
-  EXPECT_EQ(files,
+  EXPECT_EQ(test::FileNames(out),
             (std::vector<std::string>{"E.bin", "E.exr", "E.h", "Eavg.bin", "Eavg.exr", "Eavg.h",
                                       "Favg.h", "dfg.bin", "dfg.exr", "dfg.h", "kulla_conty.h"}));
   const Table e = ReadExrTable((out / "E.exr").string());
@@ -399,10 +396,7 @@ TEST(PlanCli, TablesSelectAmongThePlannedOnes) {
   const auto r = Lutbake("bake --out " + out.string() + " --scene " + kPlans +
                          "listed.gltf --tables E,Eavg --format header --size 8 --samples 256");
   ASSERT_EQ(r.status, 0) << r.output;
-  std::vector<std::string> files;
-  for (const auto &e : fs::directory_iterator(out)) files.push_back(e.path().filename());
-  std::sort(files.begin(), files.end());
-  EXPECT_EQ(files, (std::vector<std::string>{"E.h", "Eavg.h", "kulla_conty.h"}));
+  EXPECT_EQ(test::FileNames(out), (std::vector<std::string>{"E.h", "Eavg.h", "kulla_conty.h"}));
   const HeaderValues e = ReadHeaderValues((out / "E.h").string());
   EXPECT_EQ(e.height, 2);  // the scene's two listed roughness values
   fs::remove_all(out);
