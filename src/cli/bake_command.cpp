@@ -280,15 +280,21 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
     const bool headers = std::any_of(writers.begin(), writers.end(), [](const auto &w) {
       return std::string(w->formatName()) == "header";
     });
+    // The metadata of a header that holds functions and no table of its own:
+    // what it is, then the plan's sources, the version and the command line.
+    const auto functionHeaderMetadata = [&](std::vector<std::pair<std::string, std::string>> what) {
+      what.insert(what.end(), planMetadata.begin(), planMetadata.end());
+      what.emplace_back("lutbakeVersion", LutbakeVersion());
+      what.emplace_back("commandLine", commandLine);
+      return what;
+    };
     if (schlickFavgHeader && headers) {
       const std::string path = (std::filesystem::path(o.outDir) / "Favg.h").string();
-      auto metadata = planMetadata;
-      metadata.insert(metadata.begin(), {"table", "Favg"});
-      metadata.insert(metadata.begin() + 1,
-                      {"content", "closed form (Schlick), no table: F_avg = 20/21 F0 + 1/21 F90"});
-      metadata.emplace_back("lutbakeVersion", LutbakeVersion());
-      metadata.emplace_back("commandLine", commandLine);
-      WriteSchlickFavgHeader(output.Add(path), writeOptions, metadata);
+      WriteSchlickFavgHeader(
+          output.Add(path), writeOptions,
+          functionHeaderMetadata(
+              {{"table", "Favg"},
+               {"content", "closed form (Schlick), no table: F_avg = 20/21 F0 + 1/21 F90"}}));
       nlohmann::ordered_json entry;
       entry["name"] = "Favg";
       entry["closedForm"] = "F_avg = 20/21 F0 + 1/21 F90";
@@ -307,12 +313,10 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
       if (!averaged) continue;
       const std::string path =
           (std::filesystem::path(o.outDir) / ("kulla_conty" + suffix + ".h")).string();
-      auto metadata = planMetadata;
-      metadata.insert(metadata.begin(), {"helpers", "Kulla-Conty f_ms and F_ms over E" + suffix +
-                                                        " and Eavg" + suffix});
-      metadata.emplace_back("lutbakeVersion", LutbakeVersion());
-      metadata.emplace_back("commandLine", commandLine);
-      WriteKullaContyHeader(output.Add(path), writeOptions, suffix, metadata);
+      WriteKullaContyHeader(
+          output.Add(path), writeOptions, suffix,
+          functionHeaderMetadata(
+              {{"helpers", "Kulla-Conty f_ms and F_ms over E" + suffix + " and Eavg" + suffix}}));
       summary["helpers"].push_back(path);
     }
     if (!unreached.empty()) {
