@@ -8,17 +8,18 @@
 //   alpha: n/a
 //   texelConvention: texel i of N holds the value at u = (i + 0.5) / N, mapped linearly onto [min, max]; y = 0 first
 //   channelLayout: Y = Favg
-//   estimator: adaptive Gauss-Kronrod quadrature
+//   estimator: panel Gauss-Legendre quadrature over the half vector, two orders
 //   tolerance: none
 //   samplesPerTexel: n/a
 //   quadratureTexels: n/a
 //   replicates: n/a
 //   seed: 0
-//   errorBound: Gauss-Kronrod error estimate
-//   errorMax: 1.1102230246251565e-16
-//   errorRms: 5.9690622354909203e-17
+//   errorBound: Gauss-Kronrod error estimate; plus the rounding of the stored value (see errorStorage)
+//   errorMax: 2.8383166039702701e-08
+//   errorRms: 1.41183567899367e-08
+//   errorStorage: float32
 //   lutbakeVersion: 0.1.0
-//   commandLine: lutbake bake --out luts --tolerance 1e-6 --format exr,bin,header
+//   commandLine: lutbake bake --out luts --format exr,bin,header
 //   storage: float32, exactly the EXR and .bin values
 //
 // Texel convention: texel i of an axis of n texels holds the value at
@@ -27,6 +28,8 @@
 // Layout: kValues[(y * kWidth + x) * kChannels + c]; one channel.
 // Lookups interpolate bilinearly between texel centres, clamp at the edges,
 // and return a texel's value exactly at its centre.
+// kErrorMax bounds |value - truth| for every value as stored here, the
+// rounding to float32 included.
 #pragma once
 
 #include <array>
@@ -51,10 +54,10 @@ inline constexpr const char *kXMapping = "linear";
 inline constexpr double kTexelCentre = 0.5;
 inline constexpr const char *kChannelNames[kChannels] = {"Favg"};
 inline constexpr const char *kLutbakeVersion = "0.1.0";
-inline constexpr const char *kCommandLine = "lutbake bake --out luts --tolerance 1e-6 --format exr,bin,header";
+inline constexpr const char *kCommandLine = "lutbake bake --out luts --format exr,bin,header";
 inline constexpr double kXMin = 0.0;
 inline constexpr double kXMax = 1.0;
-inline constexpr double kErrorMax = 1.1102230246251565e-16;
+inline constexpr double kErrorMax = 2.8383166039702701e-08;
 inline constexpr float kValues[kWidth * kHeight * kChannels] = {
     0.0625f, 0.092261903f, 0.122023806f, 0.151785716f, 0.181547612f, 0.211309522f,
     0.241071433f, 0.270833343f, 0.300595224f, 0.330357134f, 0.360119045f, 0.389880955f,

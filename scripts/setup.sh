@@ -10,6 +10,6 @@ $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   g++ clang cmake make ninja-build pkg-config \
   libopenexr-dev libimath-dev libopenimageio-dev openimageio-tools \
-  libtbb-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev >/dev/null
+  libtbb-dev libhwy-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev >/dev/null
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "lutbake/albedo_estimator.h"
+#include "lutbake/albedo_quadrature.h"
 #include "lutbake/reference_integrator.h"
 #include "lutbake/replicated_integrator.h"
 
@@ -29,6 +30,7 @@ std::string_view ToString(Estimator estimator) {
     case Estimator::kCosine: return "cosine";
     case Estimator::kUniform: return "uniform";
     case Estimator::kQuadrature: return "quadrature";
+    case Estimator::kAdaptiveQuadrature: return "adaptive";
   }
   return "?";
 }
@@ -62,7 +64,7 @@ void FresnelAxes(FresnelModel model, int count, Axis *x, Axis *y) {
 }
 
 uint64_t SamplesPerTexel(TableKind kind, const BakeSettings &settings) {
-  if (kind == TableKind::kFavg || settings.estimator == Estimator::kQuadrature) return 0;
+  if (kind == TableKind::kFavg || IsQuadrature(settings.estimator)) return 0;
   if (kind == TableKind::kEavg) return settings.samples * kAverageSampleFactor;
   return settings.samples;
 }
@@ -88,15 +90,55 @@ PointSet PointSetOf(Estimator estimator) {
              : PointSet::kIndependentRandom;
 }
 
-double QuadratureTolerance(const BakeSettings &s) {
-  // A tolerance run asks the quadrature for EPS / 32: its reported bound,
-  // 16 x the estimate plus the floor, then stays below EPS down to 1e-9.
+double AdaptiveTolerance(const BakeSettings &s) {
+  // A tolerance run asks the adaptive quadrature for EPS / 32: its reported
+  // bound, 16 x the estimate plus the floor, then stays below EPS down to 1e-9.
   return s.tolerance > 0.0 ? s.tolerance / (2.0 * kQuadratureErrorFactor)
                            : kQuadratureDefaultTolerance;
 }
 
-TexelResult QuadratureAlbedo(bool split, const BakeSettings &s, const Ndf &ndf, double mu_o) {
-  const ReferenceAlbedo r = IntegrateReferenceAlbedo(ndf, s.smith, mu_o, QuadratureTolerance(s));
+// The bound the panel quadrature is asked for.
+double PanelTolerance(const BakeSettings &s) {
+  return s.tolerance > 0.0 ? s.tolerance : kDefaultQuadratureTolerance;
+}
+
+// A mirror (alpha = 0) is exact, not integrated: its only microfacet is n,
+// so the light is the mirror direction, G2 = 1, and E = 1, B = (1 - mu)^5.
+TexelResult MirrorAlbedo(bool split, double mu_o) {
+  const SchlickWeights fc = Schlick(mu_o);
+  TexelResult out;
+  out.value[0] = split ? fc.complement : 1.0;
+  out.value[1] = fc.fc;
+  out.quadrature = true;
+  out.exact = true;
+  return out;
+}
+
+TexelResult PanelAlbedo(bool split, const BakeSettings &s, const Ndf &ndf, double mu_o) {
+  const SplitSumQuadrature q =
+      IntegrateSplitSumQuadrature(ndf, s.smith, mu_o, PanelTolerance(s), split);
+  TexelResult out;
+  out.value[0] = split ? q.A : q.A + q.B;
+  out.value[1] = q.B;
+  out.error[0] = split ? q.boundA : q.boundE;
+  out.error[1] = q.boundB;
+  out.evaluations = q.evaluations;
+  out.quadrature = true;
+  return out;
+}
+
+TexelResult PanelAverage(const BakeSettings &s, const Ndf &ndf) {
+  const AverageQuadrature q = IntegrateAverageQuadrature(ndf, s.smith, PanelTolerance(s));
+  TexelResult out;
+  out.value[0] = q.value;
+  out.error[0] = q.bound;
+  out.evaluations = q.evaluations;
+  out.quadrature = true;
+  return out;
+}
+
+TexelResult AdaptiveAlbedo(bool split, const BakeSettings &s, const Ndf &ndf, double mu_o) {
+  const ReferenceAlbedo r = IntegrateReferenceAlbedo(ndf, s.smith, mu_o, AdaptiveTolerance(s));
   TexelResult out;
   out.value[0] = split ? r.A : r.E;
   out.value[1] = r.B;
@@ -110,9 +152,9 @@ TexelResult QuadratureAlbedo(bool split, const BakeSettings &s, const Ndf &ndf, 
   return out;
 }
 
-TexelResult QuadratureAverage(const BakeSettings &s, const Ndf &ndf) {
+TexelResult AdaptiveAverage(const BakeSettings &s, const Ndf &ndf) {
   const double tolerance =
-      s.tolerance > 0.0 ? QuadratureTolerance(s) : 10.0 * kQuadratureDefaultTolerance;
+      s.tolerance > 0.0 ? AdaptiveTolerance(s) : 10.0 * kQuadratureDefaultTolerance;
   const ReferenceAverage r = IntegrateReferenceAlbedoAverage(ndf, s.smith, tolerance);
   TexelResult out;
   out.value[0] = r.value;
@@ -205,10 +247,9 @@ PointValue EvaluateAlbedo(TableKind kind, const BakeSettings &s, double mu_o, do
     throw std::domain_error("mu " + FormatDouble(mu_o) + " is outside [0, 1]");
   const Ndf ndf{s.ndf, alpha};
   const bool split = kind == TableKind::kDfg;
-  // A mirror (alpha = 0) is exact, not sampled: its only microfacet is n, so
-  // the light is the mirror direction, G2 = 1, and E = 1, B = (1 - mu)^5.
-  if (alpha == 0.0 || s.estimator == Estimator::kQuadrature)
-    return QuadratureAlbedo(split, s, ndf, mu_o);
+  if (alpha == 0.0) return MirrorAlbedo(split, mu_o);
+  if (s.estimator == Estimator::kQuadrature) return PanelAlbedo(split, s, ndf, mu_o);
+  if (s.estimator == Estimator::kAdaptiveQuadrature) return AdaptiveAlbedo(split, s, ndf, mu_o);
   const AlbedoEstimator estimator{ndf, s.smith, StrategyOf(s.estimator)};
   const Vec3 o = ViewDirection(mu_o);
   const double L_o = ndf.MuLambda(mu_o);
@@ -231,7 +272,7 @@ PointValue EvaluateAlbedo(TableKind kind, const BakeSettings &s, double mu_o, do
         s.samples, pointSeed, &out);
   }
   if (sampled) return out;
-  TexelResult q = QuadratureAlbedo(split, s, ndf, mu_o);
+  TexelResult q = PanelAlbedo(split, s, ndf, mu_o);
   q.samples = out.samples;  // the rounds spent before switching still count
   return q;
 }
@@ -241,7 +282,14 @@ PointValue EvaluateAlbedo(TableKind kind, const BakeSettings &s, double mu_o, do
 PointValue EvaluateAlbedoAverage(const BakeSettings &s, double alpha, uint64_t pointSeed) {
   CheckAlpha(alpha);
   const Ndf ndf{s.ndf, alpha};
-  if (alpha == 0.0 || s.estimator == Estimator::kQuadrature) return QuadratureAverage(s, ndf);
+  if (alpha == 0.0) {
+    TexelResult mirror;
+    mirror.value[0] = 1.0;  // E = 1 at every mu
+    mirror.quadrature = mirror.exact = true;
+    return mirror;
+  }
+  if (s.estimator == Estimator::kQuadrature) return PanelAverage(s, ndf);
+  if (s.estimator == Estimator::kAdaptiveQuadrature) return AdaptiveAverage(s, ndf);
   const AlbedoEstimator estimator{ndf, s.smith, StrategyOf(s.estimator)};
   TexelResult out;
   const bool sampled = SampleTexel<3, 1>(
@@ -253,7 +301,7 @@ PointValue EvaluateAlbedoAverage(const BakeSettings &s, double alpha, uint64_t p
       },
       SamplesPerTexel(TableKind::kEavg, s), pointSeed, &out);
   if (sampled) return out;
-  TexelResult q = QuadratureAverage(s, ndf);
+  TexelResult q = PanelAverage(s, ndf);
   q.samples = out.samples;
   return q;
 }
@@ -316,9 +364,14 @@ Table BakeTableOn(TableKind kind, const BakeSettings &s, const Axis &x, const Ax
   std::atomic<size_t> done{0};
   tbb::parallel_for(
       tbb::blocked_range<size_t>(0, texels), [&](const tbb::blocked_range<size_t> &r) {
-        for (size_t t = r.begin(); t != r.end(); ++t) {
-          const int ix = static_cast<int>(t % table.width());
-          const int iy = static_cast<int>(t / table.width());
+        for (size_t k = r.begin(); k != r.end(); ++k) {
+          // Column by column (k runs down each column of constant mu): the
+          // quadrature's azimuthal nodes depend on mu only, and a thread
+          // that stays in a column reuses them. Each texel is computed
+          // alone, so the order changes nothing in the values.
+          const int ix = static_cast<int>(k / table.height());
+          const int iy = static_cast<int>(k % table.height());
+          const size_t t = static_cast<size_t>(iy) * table.width() + ix;
           TexelResult texel;
           switch (kind) {
             case TableKind::kE:
@@ -366,7 +419,7 @@ Table BakeTableOn(TableKind kind, const BakeSettings &s, const Axis &x, const Ax
   }
 
   const bool albedo = kind != TableKind::kFavg;
-  const bool sampled = albedo && s.estimator != Estimator::kQuadrature;
+  const bool sampled = albedo && !IsQuadrature(s.estimator);
   const bool tolerance = sampled && s.tolerance > 0.0;
   const int replicates = tolerance
                              ? std::clamp(s.replicates, 1, 64)
@@ -391,7 +444,10 @@ Table BakeTableOn(TableKind kind, const BakeSettings &s, const Axis &x, const Ax
   m.emplace_back("texelConvention", convention);
   m.emplace_back("channelLayout", kind == TableKind::kDfg ? "R = A (scale), G = B (bias)"
                                                           : "Y = " + std::string(TableName(kind)));
-  std::string estimatorText = "adaptive Gauss-Kronrod quadrature";
+  std::string estimatorText =
+      s.estimator == Estimator::kAdaptiveQuadrature
+          ? "adaptive Gauss-Kronrod quadrature"
+          : "panel Gauss-Legendre quadrature over the half vector, two orders";
   if (sampled)
     estimatorText =
         std::string(ToString(s.estimator)) +
@@ -399,7 +455,12 @@ Table BakeTableOn(TableKind kind, const BakeSettings &s, const Axis &x, const Ax
   if (tolerance && s.allowQuadratureSwitch)
     estimatorText += "; texels for which the quadrature is cheaper switch to it";
   m.emplace_back("estimator", estimatorText);
-  m.emplace_back("tolerance", s.tolerance > 0.0 && albedo ? FormatDouble(s.tolerance) : "none");
+  m.emplace_back("tolerance",
+                 !albedo             ? "none"
+                 : s.tolerance > 0.0 ? FormatDouble(s.tolerance)
+                 : s.estimator == Estimator::kQuadrature
+                     ? FormatDouble(kDefaultQuadratureTolerance) + " (the default: float32-exact)"
+                     : "none");
   m.emplace_back("samplesPerTexel",
                  !sampled    ? "n/a"
                  : tolerance ? "adaptive, mean " +
@@ -409,20 +470,27 @@ Table BakeTableOn(TableKind kind, const BakeSettings &s, const Axis &x, const Ax
   m.emplace_back("quadratureTexels", albedo ? std::to_string(stats.quadratureTexels) : "n/a");
   m.emplace_back("replicates", sampled ? std::to_string(replicates) : "n/a");
   m.emplace_back("seed", std::to_string(s.seed));
-  char bound[256];
+  // Every bound is stated for the value as stored (storage.h): the writers
+  // add the rounding to their storage and say so in errorStorage.
+  const std::string panel =
+      "quadrature texels: |V_k - V_(k-1)| + 1e-10 of the panel rule at two orders";
+  const std::string stored = "; plus the rounding of the stored value (see errorStorage)";
+  char bound[320];
   std::snprintf(bound, sizeof bound,
                 "sampled texels: %.3f standard errors (Student t, %d dof, two-sided 99%%) from the "
-                "spread of %d independent %s, plus 4.6 / N for events no sample met; quadrature "
-                "texels: %.0f x the Gauss-Kronrod estimate + %.0e",
+                "spread of %d independent %s, plus 4.6 / N for events no sample met",
                 StudentT99(replicates - 1), replicates - 1, replicates,
-                random ? "random point sets" : "scrambles", kQuadratureErrorFactor,
-                kQuadratureErrorFloor);
-  m.emplace_back("errorBound", !albedo   ? "Gauss-Kronrod error estimate"
-                               : sampled ? bound
-                                         : FormatDouble(kQuadratureErrorFactor) +
-                                               " x the Gauss-Kronrod estimate + 1e-10");
-  m.emplace_back("errorMax", FormatDouble(table.MaxError()));
-  m.emplace_back("errorRms", FormatDouble(table.RmsError()));
+                random ? "random point sets" : "scrambles");
+  std::string boundText;
+  if (!albedo)
+    boundText = "Gauss-Kronrod error estimate";
+  else if (s.estimator == Estimator::kAdaptiveQuadrature)
+    boundText = FormatDouble(kQuadratureErrorFactor) + " x the Gauss-Kronrod estimate + 1e-10";
+  else if (sampled)
+    boundText = bound + (tolerance && s.allowQuadratureSwitch ? "; " + panel : std::string());
+  else
+    boundText = panel;
+  m.emplace_back("errorBound", boundText + stored);
   m.emplace_back("lutbakeVersion", LutbakeVersion());
   m.emplace_back("commandLine", s.commandLine);
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

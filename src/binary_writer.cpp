@@ -71,9 +71,13 @@ class BinaryWriter final : public TableWriter {
  public:
   const char *formatName() const override { return "bin"; }
   const char *extension() const override { return ".bin"; }
-  void Write(const Table &table, const std::string &path, const WriteOptions &) const override {
+  void Write(const Table &table, const std::string &path,
+             const WriteOptions &options) const override {
+    const ValueType type = options.binaryValues;
+    const bool wide = type == ValueType::kFloat64;
     std::string metadata;
-    for (const auto &[key, value] : table.metadata) metadata += key + "=" + value + "\n";
+    for (const auto &[key, value] : MetadataForStorage(table, type))
+      metadata += key + "=" + value + "\n";
     std::string nodes;  // the node values of listed axes, x first
     for (const Axis *axis : {&table.x, &table.y})
       if (axis->listed() && (axis == &table.x || table.is2D()))
@@ -87,7 +91,7 @@ class BinaryWriter final : public TableWriter {
     PutU32(out, static_cast<uint32_t>(table.width()));
     PutU32(out, static_cast<uint32_t>(table.height()));
     PutU32(out, static_cast<uint32_t>(table.channels));
-    PutU32(out, 1);  // float32
+    PutU32(out, wide ? kBinaryFloat64 : kBinaryFloat32);
     PutU32(out, 1);  // error block present
     PutAxis(out, table.x, true);
     PutAxis(out, table.y, table.is2D());
@@ -95,8 +99,11 @@ class BinaryWriter final : public TableWriter {
     out += metadata;
     out += nodes;
     out.resize(dataOffset, '\0');
-    for (double v : table.values) PutF32(out, static_cast<float>(v));
-    for (double e : table.errors) PutF32(out, static_cast<float>(e));
+    // The bounds of the stored values (storage.h): exact in float64, rounded
+    // up to float32 otherwise, so that the float32 written is the bound itself.
+    const std::vector<double> bounds = StoredBounds(table, type);
+    for (double v : table.values) wide ? PutF64(out, v) : PutF32(out, static_cast<float>(v));
+    for (double e : bounds) wide ? PutF64(out, e) : PutF32(out, static_cast<float>(e));
     std::ofstream file(path, std::ios::binary | std::ios::trunc);
     file.write(out.data(), static_cast<std::streamsize>(out.size()));
     file.close();
@@ -128,7 +135,9 @@ Table ReadBinaryTable(const std::string &path) {
   const uint32_t valueType = GetU32(in, 32), flags = GetU32(in, 36);
   if (dims != 1 && dims != 2) throw IoError(path + ": dimensions must be 1 or 2");
   if (channels != 1 && channels != 2) throw IoError(path + ": channels must be 1 or 2");
-  if (valueType != 1) throw IoError(path + ": value type must be 1 (float32)");
+  if (valueType != kBinaryFloat32 && valueType != kBinaryFloat64)
+    throw IoError(path + ": value type must be 1 (float32) or 2 (float64)");
+  const size_t valueBytes = valueType == kBinaryFloat64 ? 8 : 4;
   table.channels = static_cast<int>(channels);
   table.channelNames =
       channels == 2 ? std::vector<std::string>{"R", "G"} : std::vector<std::string>{"Y"};
@@ -181,14 +190,18 @@ Table ReadBinaryTable(const std::string &path) {
       table.kind = k;
   const size_t count = static_cast<size_t>(width) * height * channels;
   const size_t blocks = (flags & 1u) ? 2 : 1;
-  if (in.size() != dataOffset + blocks * 4 * count)
+  if (in.size() != dataOffset + blocks * valueBytes * count)
     throw IoError(path + ": " + std::to_string(in.size()) + " bytes, expected " +
-                  std::to_string(dataOffset + blocks * 4 * count) + " (truncated or oversized)");
+                  std::to_string(dataOffset + blocks * valueBytes * count) +
+                  " (truncated or oversized)");
+  const auto get = [&](size_t at) {
+    return valueBytes == 8 ? GetF64(in, at) : static_cast<double>(GetF32(in, at));
+  };
   table.values.resize(count);
-  for (size_t i = 0; i < count; ++i) table.values[i] = GetF32(in, dataOffset + 4 * i);
+  for (size_t i = 0; i < count; ++i) table.values[i] = get(dataOffset + valueBytes * i);
   if (flags & 1u) {
     table.errors.resize(count);
-    for (size_t i = 0; i < count; ++i) table.errors[i] = GetF32(in, dataOffset + 4 * (count + i));
+    for (size_t i = 0; i < count; ++i) table.errors[i] = get(dataOffset + valueBytes * (count + i));
   }
   return table;
 }

@@ -376,7 +376,10 @@ class Checker {
     s.ndf = t.ndf;
     s.smith = t.smith;
     s.fresnel = t.fresnel;
-    s.estimator = Estimator::kQuadrature;
+    // The adaptive Gauss-Kronrod reference, not the bake's default panel
+    // quadrature: an independent method (another parameterisation, another
+    // rule, another error estimate) judges the table.
+    s.estimator = Estimator::kAdaptiveQuadrature;
     // Far below what the table claims (1/64 of its errorMax), but not below
     // the option (float32 storage rounds at 6e-8 anyway) nor above 1e-6.
     const double tolerance = std::clamp(t.statedErrorMax / 64.0, options_.referenceTolerance, 1e-6);

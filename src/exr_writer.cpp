@@ -2,6 +2,7 @@
 // scanline (INCREASING_Y), channel Y for single-channel tables and R = A,
 // G = B for dfg; every metadata pair becomes a string attribute, and the
 // error summary also numeric (errorMax, errorRms as double attributes).
+// The error summary is that of the stored float32 values (storage.h).
 // OpenEXR itself stamps no date, so equal tables give equal files.
 #include <ImfChannelList.h>
 #include <ImfDoubleAttribute.h>
@@ -30,12 +31,13 @@ class ExrWriter final : public TableWriter {
       header.lineOrder() = Imf::INCREASING_Y;
       for (const std::string &name : table.channelNames)
         header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-      for (const auto &[key, value] : table.metadata) {
+      for (const auto &[key, value] : MetadataForStorage(table, ValueType::kFloat32)) {
         if (key == "errorMax" || key == "errorRms") continue;
         header.insert(key, Imf::StringAttribute(value));
       }
-      header.insert("errorMax", Imf::DoubleAttribute(table.MaxError()));
-      header.insert("errorRms", Imf::DoubleAttribute(table.RmsError()));
+      const BoundSummary bounds = SummarizeStoredBounds(table, ValueType::kFloat32);
+      header.insert("errorMax", Imf::DoubleAttribute(bounds.max));
+      header.insert("errorRms", Imf::DoubleAttribute(bounds.rms));
       Imf::FrameBuffer frame;
       const size_t xStride = sizeof(float) * channels;
       const size_t yStride = xStride * width;

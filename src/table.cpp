@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "lutbake/storage.h"
+
 namespace lutbake {
 
 const char *TableName(TableKind kind) {
@@ -113,7 +115,9 @@ const std::string *Table::FindMetadata(const std::string &key) const {
 
 Table ErrorMapOf(const Table &table) {
   Table map = table;
-  map.values = table.errors;
+  // The bounds of T.exr's float32 values, rounded up to float32: the EXR
+  // stores each exactly.
+  map.values = StoredBounds(table, ValueType::kFloat32);
   map.errors.assign(table.errors.size(), 0.0);
   for (auto &[key, value] : map.metadata)
     if (key == "table") value = std::string(TableName(table.kind)) + ".err";

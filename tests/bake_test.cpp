@@ -16,10 +16,12 @@
 namespace lutbake {
 namespace {
 
+// A sampled bake (visible normals, the estimator --samples chooses).
 BakeSettings Small(int size, uint64_t samples) {
   BakeSettings s;
   s.sizeE = s.sizeEavg = s.sizeFavg = s.sizeDfg = size;
   s.samples = samples;
+  s.estimator = Estimator::kVisibleNormal;
   return s;
 }
 

@@ -69,6 +69,7 @@ TEST(Tolerance, SamplingRoundsAloneReachALooseTolerance) {
   // Without the quadrature switch, sampling doubles until every bound is
   // below 2e-3; the real error must then be within EPS and the bound.
   BakeSettings s = ToleranceSettings(8, 2e-3);
+  s.estimator = Estimator::kVisibleNormal;
   s.allowQuadratureSwitch = false;
   for (TableKind kind : {TableKind::kE, TableKind::kDfg}) {
     BakeStats stats;

@@ -68,7 +68,12 @@ TEST(ExrWriter, ReadsBackThroughOpenImageIO) {
     EXPECT_EQ(spec.get_string_attribute("table"), TableName(kind));
     EXPECT_EQ(spec.get_string_attribute("commandLine"), "lutbake bake --test");
     EXPECT_FALSE(spec.get_string_attribute("texelConvention").empty());
-    EXPECT_DOUBLE_EQ(spec.get_float_attribute("errorMax"), static_cast<float>(t.MaxError()));
+    // errorMax bounds the stored float32 values: the largest integration
+    // bound plus rounding, each rounded up to float32 (storage.h).
+    const BoundSummary stored = SummarizeStoredBounds(t, ValueType::kFloat32);
+    EXPECT_DOUBLE_EQ(spec.get_float_attribute("errorMax"), static_cast<float>(stored.max));
+    EXPECT_GE(stored.max, t.MaxError());
+    EXPECT_EQ(spec.get_string_attribute("errorStorage"), "float32");
     EXPECT_EQ(spec.find_attribute("DateTime"), nullptr);
     std::vector<float> pixels(t.values.size());
     ASSERT_TRUE(in->read_image(0, 0, 0, t.channels, OIIO::TypeDesc::FLOAT, pixels.data()));
@@ -109,8 +114,13 @@ TEST(BinaryWriter, RoundTrip) {
     EXPECT_EQ(back.y.name, t.y.name);
     ASSERT_EQ(back.values.size(), t.values.size());
     for (size_t i = 0; i < t.values.size(); ++i) {
-      EXPECT_EQ(back.values[i], static_cast<double>(static_cast<float>(t.values[i])));
-      EXPECT_EQ(back.errors[i], static_cast<double>(static_cast<float>(t.errors[i])));
+      const double stored = static_cast<double>(static_cast<float>(t.values[i]));
+      EXPECT_EQ(back.values[i], stored);
+      // The error block bounds the stored value: the integration bound plus
+      // the rounding, rounded up to a float32.
+      EXPECT_EQ(back.errors[i], StoredBound(t.values[i], t.errors[i], ValueType::kFloat32));
+      EXPECT_GE(back.errors[i], t.errors[i] + std::abs(stored - t.values[i]));
+      EXPECT_EQ(back.errors[i], static_cast<double>(static_cast<float>(back.errors[i])));
     }
     ASSERT_NE(back.FindMetadata("table"), nullptr);
     EXPECT_EQ(*back.FindMetadata("table"), TableName(kind));

@@ -15,26 +15,38 @@
 namespace lutbake {
 
 enum class Estimator {
-  kVisibleNormal,        // visible-normal sampling, scrambled Sobol points (default)
+  kQuadrature,           // panel Gauss-Legendre, two orders (albedo_quadrature.h): the default
+  kVisibleNormal,        // visible-normal sampling, scrambled Sobol points
   kVisibleNormalRandom,  // visible-normal sampling, independent random points
   kNdf,                  // NDF sampling, scrambled Sobol points
   kCosine,               // cosine-weighted light directions, independent random points
   kUniform,              // uniform hemisphere light directions, independent random points
-  kQuadrature,           // deterministic nested Gauss-Kronrod (reference_integrator.h)
+  kAdaptiveQuadrature,   // nested adaptive Gauss-Kronrod (reference_integrator.h): the
+                         // reference that `lutbake check` and the tests hold tables to
 };
 
 inline constexpr Estimator kAllEstimators[] = {
     Estimator::kUniform,       Estimator::kCosine,
     Estimator::kNdf,           Estimator::kVisibleNormalRandom,
-    Estimator::kVisibleNormal, Estimator::kQuadrature};
+    Estimator::kVisibleNormal, Estimator::kAdaptiveQuadrature,
+    Estimator::kQuadrature};
 
-// "vndf", "vndf-random", "ndf", "cosine", "uniform", "quadrature".
+// The deterministic integrators (no samples, no seed).
+constexpr bool IsQuadrature(Estimator e) {
+  return e == Estimator::kQuadrature || e == Estimator::kAdaptiveQuadrature;
+}
+
+// "vndf", "vndf-random", "ndf", "cosine", "uniform", "adaptive", "quadrature".
 std::string_view ToString(Estimator estimator);
 bool ParseEstimator(std::string_view name, Estimator *estimator);
 
-// Samples per texel of E and dfg by default: the smallest power of two at
-// which the default bake measured below 1e-4 at every checked texel against
-// the quadrature reference (README, "Accuracy of the default bake";
+// The integration bound a default bake (no --samples, no --tolerance) asks
+// of every texel: with the float32 rounding of the stored value (at most
+// 3e-8 below 1) the stated bound stays below 4e-8, under 1e-7 everywhere.
+inline constexpr double kDefaultQuadratureTolerance = 1e-8;
+// Samples per texel of E and dfg when a sampled estimator is asked for
+// without --samples: the smallest power of two at which every checked texel
+// of a bake measured within 1e-4 of the reference (README;
 // scripts/measure_default_error.sh reproduces it).
 inline constexpr uint64_t kDefaultSamples = 65536;
 // First round of a tolerance run: samples per texel before the first check.
@@ -53,14 +65,12 @@ inline constexpr int kToleranceReplicates = 8;
 // In a tolerance run, a sampled texel whose bound predicts (error ~ 1/N, the
 // rate `lutbake report` measures for the sampled estimators) more than this
 // many samples to reach EPS is integrated by the quadrature instead, which
-// costs about as much as this many visible-normal samples at EPS = 1e-6
-// (10^4 evaluations of ~35 ns against ~100 ns per sample, measured on the
-// default tables).
-inline constexpr uint64_t kQuadratureSwitchSamples = 16384;
+// costs about as much as this many visible-normal samples (README, "Speed").
+inline constexpr uint64_t kQuadratureSwitchSamples = 4096;
 // A sampled texel's bound adds kUnseenEventCount / N for events that none of
 // its N samples met (-ln 0.01: bake.cpp, SampleTexel, says why).
 inline constexpr double kUnseenEventCount = 4.605170185988091;
-// The quadrature's error estimate is the sum of |K15 - G7| over its
+// The adaptive quadrature's error estimate is the sum of |K15 - G7| over its
 // intervals plus the inner integrals' worst estimate. It can be too small:
 // against a reference at 1e-13 over 1764 points (the extreme grid and 40
 // mu per roughness, both NDFs and Smith forms) at tolerances 1.25e-5 to
@@ -74,14 +84,14 @@ inline constexpr double kQuadratureErrorFactor = 16.0;
 inline constexpr double kQuadratureErrorFloor = 1e-10;
 // Most samples per texel a --sampling-only tolerance run may spend (by default).
 inline constexpr uint64_t kDefaultMaxSamples = uint64_t{1} << 26;
-// Default tolerance of the quadrature outside tolerance runs.
+// Default tolerance of the adaptive quadrature outside tolerance runs.
 inline constexpr double kQuadratureDefaultTolerance = 1e-12;
 
 struct BakeSettings {
   NdfKind ndf = NdfKind::kGgx;
   SmithForm smith = SmithForm::kCorrelated;
   FresnelModel fresnel = FresnelModel::kSchlick;
-  Estimator estimator = Estimator::kVisibleNormal;
+  Estimator estimator = Estimator::kQuadrature;
   int sizeE = 32;
   int sizeEavg = 32;
   int sizeFavg = 32;
@@ -91,6 +101,8 @@ struct BakeSettings {
   uint64_t seed = 0;
   int replicates = kDefaultReplicates;
   // Tolerance run when > 0: every texel refined until its bound is <= this.
+  // 0: the quadrature to kDefaultQuadratureTolerance, or the sampled
+  // estimators with `samples` samples.
   double tolerance = 0.0;
   // Tolerance runs: may a texel switch to the quadrature (see above)? If
   // not, sampling alone continues up to maxSamples.

@@ -10,7 +10,7 @@
 //   20     4     u32       width  = texel count of axis x
 //   24     4     u32       height = texel count of axis y (1 for a 1D table)
 //   28     4     u32       channels (1, or 2 for dfg: A then B)
-//   32     4     u32       value type (1 = IEEE-754 float32)
+//   32     4     u32       value type (1 = IEEE-754 float32, 2 = float64)
 //   36     4     u32       flags (bit 0: an error block follows the values)
 //   40     48    axis x    char[24] name (UTF-8, NUL-padded), f64 min, f64 max,
 //                          u32 count, u32 mapping (0 = linear, texel centres:
@@ -24,8 +24,12 @@
 //                          count, increasing), then those of axis y when its
 //                          mapping is 1; nothing for linear axes
 //   ...          zero padding up to D
-//   D      4 W H C         values, float32, [y][x][channel], y = 0 first
-//   D+4WHC 4 W H C         error bounds, same layout (when flags bit 0 is set)
+//   D      S W H C         values, [y][x][channel], y = 0 first; S = 4 bytes
+//                          for float32, 8 for float64
+//   D+SWHC S W H C         error bounds of the stored values, same type and
+//                          layout (when flags bit 0 is set); in float32 they
+//                          are rounded up, so each covers the float32 rounding
+//                          of its value as well
 #pragma once
 
 #include <string>
@@ -36,9 +40,11 @@ namespace lutbake {
 
 inline constexpr char kBinaryMagic[8] = {'L', 'U', 'T', 'B', 'A', 'K', 'E', '\0'};
 inline constexpr uint32_t kBinaryVersion = 1;
+inline constexpr uint32_t kBinaryFloat32 = 1;  // value type field
+inline constexpr uint32_t kBinaryFloat64 = 2;
 
-// Reads a .bin file back into a Table (values and errors as the stored
-// float32, widened). Throws IoError on a malformed or unreadable file.
+// Reads a .bin file back into a Table (values and errors as stored,
+// widened to double). Throws IoError on a malformed or unreadable file.
 Table ReadBinaryTable(const std::string &path);
 
 }  // namespace lutbake

@@ -96,7 +96,8 @@ std::string DescribeAxis(const Axis &axis);
 bool ParseAxisDescription(const std::string &text, Axis *axis);
 
 // The error map of a table: a table of the same axes and channels whose
-// values are the per-texel error bounds (written as T.err.exr).
+// values are the per-texel error bounds of T.exr's float32 values (rounding
+// included, rounded up: storage.h), written as T.err.exr.
 Table ErrorMapOf(const Table &table);
 
 }  // namespace lutbake

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "lutbake/storage.h"
 #include "lutbake/table.h"
 
 namespace lutbake {
@@ -28,6 +29,9 @@ enum class HeaderStorage { kFloat, kHalf };
 struct WriteOptions {
   std::string headerNamespace = "lutbake_luts";
   HeaderStorage headerStorage = HeaderStorage::kFloat;
+  // .bin values and error bounds: float32, or float64 for tables whose
+  // integration bound is below what float32 can hold (--tolerance 1e-9).
+  ValueType binaryValues = ValueType::kFloat32;
 };
 
 // A value as half storage holds it: rounded to binary16 (nearest even) and

@@ -24,6 +24,7 @@ struct BakeOptions {
   std::string formats = "exr,bin,header";
   std::string headerNamespace = "lutbake_luts";
   std::string headerType = "float";
+  std::string binType = "float";
   bool json = false;
   SceneOptions scene;  // --scene / --manifest: bake a plan
   bool skipUnsupported = false;

@@ -149,13 +149,7 @@ int RunEval(const EvalOptions &o) {
   settings.ndf = ParseNdf(o.ndf);
   settings.smith = ParseSmith(o.smith);
   settings.fresnel = fresnel;
-  // The quadrature unless the user asked for sampling: for a handful of
-  // points it is both faster and ~10^6 times more accurate.
-  const bool sampling = o.sampling.samples || o.sampling.tolerance > 0.0;
-  if (const int status = ApplySamplingOptions(
-          "eval", o.sampling, sampling ? Estimator::kVisibleNormal : Estimator::kQuadrature,
-          &settings))
-    return status;
+  if (const int status = ApplySamplingOptions("eval", o.sampling, &settings)) return status;
 
   std::vector<Point> points;
   if (kind == TableKind::kFavg) {

@@ -24,16 +24,20 @@ Estimator EstimatorNamed(const std::string &name) {
 
 void AddSamplingOptions(CLI::App &app, SamplingOptions &o, const std::string &unit) {
   app.add_option("--estimator", o.estimator,
-                 "vndf: visible-normal sampling, scrambled Sobol points; vndf-random: the same "
-                 "with independent random points; ndf: NDF sampling; cosine, uniform: light "
-                 "directions cosine-weighted or uniform (baselines); quadrature: deterministic "
-                 "adaptive Gauss-Kronrod")
+                 "quadrature (the default): panel Gauss-Legendre at two orders, deterministic, "
+                 "bound below 1e-8 (or --tolerance); vndf: visible-normal sampling, scrambled "
+                 "Sobol points (the default once --samples is given); vndf-random: the same with "
+                 "independent random points; ndf: NDF sampling; cosine, uniform: light "
+                 "directions cosine-weighted or uniform (baselines); adaptive: nested adaptive "
+                 "Gauss-Kronrod (the reference of lutbake check)")
       ->type_name("NAME")
       ->check(OneOf(EstimatorNames()));
   app.add_option("--samples", o.samples,
                  "Samples per " + unit +
-                     " of E and dfg (Eavg: 32x as many); at least 2 so that the error can be "
-                     "estimated. Default 65536; with --tolerance, the first round (default 1024)")
+                     " of E and dfg (Eavg: 32x as many), sampled (visible normals unless "
+                     "--estimator says otherwise); at least 2 so that the error can be "
+                     "estimated. With a sampled --estimator: default 65536; with --tolerance, the "
+                     "first round (default 1024)")
       ->type_name("N")
       ->check(InRange<uint64_t>(2, kMaxSamples, "samples per " + unit));
   app.add_option("--replicates", o.replicates,
@@ -43,8 +47,11 @@ void AddSamplingOptions(CLI::App &app, SamplingOptions &o, const std::string &un
       ->check(InRange(2, 64, "replicates"));
   app.add_option("--tolerance", o.tolerance,
                  "Refine every " + unit +
-                     " of E, Eavg and dfg (in rounds that double the samples) until its error "
-                     "bound is at most EPS; where the quadrature is cheaper it is used instead")
+                     " of E, Eavg and dfg until its integration bound is at most EPS: by the "
+                     "quadrature (adding orders), or with a sampled --estimator in rounds that "
+                     "double the samples, switching to the quadrature where that is cheaper. "
+                     "Files add the rounding of the stored values (float32: up to 3e-8; "
+                     "--bin-type float64 keeps it out)")
       ->type_name("EPS")
       ->check(RealInRange(1e-9, 0.1, "a number from 1e-9 to 0.1"));
   app.add_flag("--sampling-only", o.samplingOnly,
@@ -57,10 +64,10 @@ void AddSamplingOptions(CLI::App &app, SamplingOptions &o, const std::string &un
   AddSeedOption(app, o.seed, "Seed of the point-set scrambling");
 }
 
-int ApplySamplingOptions(const std::string &command, const SamplingOptions &o,
-                         Estimator defaultEstimator, BakeSettings *s) {
+int ApplySamplingOptions(const std::string &command, const SamplingOptions &o, BakeSettings *s) {
   const bool tolerance = o.tolerance > 0.0;
-  s->estimator = defaultEstimator;
+  const bool samplingAsked = o.samples || o.replicates || o.samplingOnly;
+  s->estimator = samplingAsked ? Estimator::kVisibleNormal : Estimator::kQuadrature;
   if (!o.estimator.empty()) s->estimator = EstimatorNamed(o.estimator);
   s->tolerance = o.tolerance;
   s->samples = o.samples ? o.samples : tolerance ? kToleranceStartSamples : kDefaultSamples;
@@ -75,10 +82,11 @@ int ApplySamplingOptions(const std::string &command, const SamplingOptions &o,
               << ": --sampling-only and --max-samples apply only with --tolerance\n";
     return 2;
   }
-  if (s->estimator == Estimator::kQuadrature && (o.samples || o.replicates || o.samplingOnly)) {
+  if (IsQuadrature(s->estimator) && samplingAsked) {
     std::cerr << "lutbake " << command
               << ": --samples, --replicates and --sampling-only apply to the sampled estimators, "
-                 "not to --estimator quadrature\n";
+                 "not to --estimator "
+              << ToString(s->estimator) << "\n";
     return 2;
   }
   return 0;

@@ -28,10 +28,12 @@ Estimator EstimatorNamed(const std::string &name);
 // `unit` names what gets the samples in the help texts: "texel" or "point".
 void AddSamplingOptions(CLI::App &app, SamplingOptions &options, const std::string &unit);
 
-// Copies the options into `settings`, with `defaultEstimator` where
-// --estimator was not given. Returns 0, or 2 after printing
-// "lutbake COMMAND: ..." for a combination that makes no sense.
+// Copies the options into `settings`. Without --estimator the estimator is
+// the quadrature (to --tolerance, or float32-exact), unless --samples,
+// --replicates or --sampling-only ask for sampling: then visible-normal
+// sampling. Returns 0, or 2 after printing "lutbake COMMAND: ..." for a
+// combination that makes no sense.
 int ApplySamplingOptions(const std::string &command, const SamplingOptions &options,
-                         Estimator defaultEstimator, BakeSettings *settings);
+                         BakeSettings *settings);
 
 }  // namespace lutbake::cli
