@@ -11,8 +11,10 @@
 
 #include "lutbake/albedo_estimator.h"
 #include "lutbake/albedo_quadrature.h"
+#include "lutbake/hash.h"
 #include "lutbake/reference_integrator.h"
 #include "lutbake/replicated_integrator.h"
+#include "vndf_kernel.h"
 
 #ifndef LUTBAKE_VERSION
 #define LUTBAKE_VERSION "unknown"
@@ -169,9 +171,9 @@ TexelResult AdaptiveAverage(const BakeSettings &s, const Ndf &ndf) {
 // rounds (doubling) until the bound is at most the tolerance. Returns false
 // when a tolerance run decides that the quadrature is the cheaper way to
 // EPS (the caller then integrates the texel with it).
-template <int Dims, int Channels, typename SampleFn>
-bool SampleTexel(const BakeSettings &s, const SampleFn &sample, uint64_t samples,
-                 uint64_t texelSeed, TexelResult *out) {
+template <int Dims, int Channels, typename BatchFn>
+bool SampleTexel(const BakeSettings &s, const BatchFn &batch, uint64_t samples, uint64_t seed,
+                 TexelResult *out) {
   const PointSet points = PointSetOf(s.estimator);
   const auto finish = [&](const ReplicatedAccumulator<Dims, Channels> &acc) {
     const ReplicatedEstimate<Channels> e = acc.Estimate();
@@ -193,12 +195,12 @@ bool SampleTexel(const BakeSettings &s, const SampleFn &sample, uint64_t samples
   if (s.tolerance <= 0.0) {
     const int k =
         static_cast<int>(std::max<uint64_t>(1, std::min<uint64_t>(s.replicates, samples)));
-    ReplicatedAccumulator<Dims, Channels> acc(k, texelSeed, points);
-    acc.ExtendTotal(sample, samples);
+    ReplicatedAccumulator<Dims, Channels> acc(k, seed, points);
+    acc.ExtendTotalBatched(batch, samples);
     finish(acc);
     return true;
   }
-  ReplicatedAccumulator<Dims, Channels> acc(s.replicates, texelSeed, points);
+  ReplicatedAccumulator<Dims, Channels> acc(s.replicates, seed, points);
   const uint64_t k = static_cast<uint64_t>(acc.replicates());
   // When the unseen-event term alone needs more samples than the quadrature
   // costs, no sampling round can pay off: go to the quadrature at once.
@@ -207,7 +209,7 @@ bool SampleTexel(const BakeSettings &s, const SampleFn &sample, uint64_t samples
     return false;
   uint64_t perReplicate = std::max<uint64_t>(2, samples / k);
   for (;;) {
-    acc.Extend(sample, perReplicate);
+    acc.ExtendBatched(batch, perReplicate);
     finish(acc);
     const double bound = *std::max_element(out->error, out->error + Channels);
     if (bound <= s.tolerance) return true;
@@ -218,6 +220,20 @@ bool SampleTexel(const BakeSettings &s, const SampleFn &sample, uint64_t samples
     if (2 * perReplicate * k > s.maxSamples) return true;  // caller sees bound > EPS
     perReplicate *= 2;
   }
+}
+
+// Scrambled Sobol points are shared by every texel of a table (their
+// trigonometry is then computed once, point_blocks.h): seeded by the table
+// and --seed. Independent random points keep the texel's own seed.
+uint64_t SampleSeed(TableKind kind, const BakeSettings &s, uint64_t pointSeed) {
+  return PointSetOf(s.estimator) == PointSet::kScrambledSobol
+             ? HashValues({static_cast<uint64_t>(kind), s.seed, 0x736f626f6cULL})
+             : pointSeed;
+}
+
+// GGX's visible-normal sampler has a SIMD kernel (vndf_kernel.h).
+bool VectorisedVisibleNormals(const BakeSettings &s) {
+  return s.ndf == NdfKind::kGgx && StrategyOf(s.estimator) == SampleStrategy::kVisibleNormal;
 }
 
 }  // namespace
@@ -253,23 +269,40 @@ PointValue EvaluateAlbedo(TableKind kind, const BakeSettings &s, double mu_o, do
   const AlbedoEstimator estimator{ndf, s.smith, StrategyOf(s.estimator)};
   const Vec3 o = ViewDirection(mu_o);
   const double L_o = ndf.MuLambda(mu_o);
+  const uint64_t seed = SampleSeed(kind, s, pointSeed);
   TexelResult out;
   bool sampled;
-  if (split) {
+  if (VectorisedVisibleNormals(s)) {
+    // The SIMD kernel: the same weights as the estimator's, in batches.
+    const auto weights = [&](const PointView &p, double *a, double *b) {
+      kernel::GgxVisibleNormalWeights(alpha, s.smith, mu_o, L_o, p.n, p.cosPhi, p.sinPhi, p.u[1],
+                                      nullptr, a, b);
+    };
+    sampled = split ? SampleTexel<2, 2>(
+                          s, [&](const PointView &p, double *w[]) { weights(p, w[0], w[1]); },
+                          s.samples, seed, &out)
+                    : SampleTexel<2, 1>(
+                          s, [&](const PointView &p, double *w[]) { weights(p, w[0], nullptr); },
+                          s.samples, seed, &out);
+  } else if (split) {
     sampled = SampleTexel<2, 2>(
         s,
-        [&](const double(&u)[2]) {
-          const AlbedoSample a = estimator.Sample(o, L_o, u[0], u[1]);
-          return std::array<double, 2>{a.weight * a.schlickComplement, a.weight * a.schlickWeight};
+        [&](const PointView &p, double *w[]) {
+          for (size_t k = 0; k < p.n; ++k) {
+            const AlbedoSample a = estimator.Sample(o, L_o, p.u[0][k], p.u[1][k]);
+            w[0][k] = a.weight * a.schlickComplement;
+            w[1][k] = a.weight * a.schlickWeight;
+          }
         },
-        s.samples, pointSeed, &out);
+        s.samples, seed, &out);
   } else {
     sampled = SampleTexel<2, 1>(
         s,
-        [&](const double(&u)[2]) {
-          return std::array<double, 1>{estimator.Sample(o, L_o, u[0], u[1]).weight};
+        [&](const PointView &p, double *w[]) {
+          for (size_t k = 0; k < p.n; ++k)
+            w[0][k] = estimator.Sample(o, L_o, p.u[0][k], p.u[1][k]).weight;
         },
-        s.samples, pointSeed, &out);
+        s.samples, seed, &out);
   }
   if (sampled) return out;
   TexelResult q = PanelAlbedo(split, s, ndf, mu_o);
@@ -291,15 +324,30 @@ PointValue EvaluateAlbedoAverage(const BakeSettings &s, double alpha, uint64_t p
   if (s.estimator == Estimator::kQuadrature) return PanelAverage(s, ndf);
   if (s.estimator == Estimator::kAdaptiveQuadrature) return AdaptiveAverage(s, ndf);
   const AlbedoEstimator estimator{ndf, s.smith, StrategyOf(s.estimator)};
+  const uint64_t seed = SampleSeed(TableKind::kEavg, s, pointSeed);
+  const uint64_t samples = SamplesPerTexel(TableKind::kEavg, s);
   TexelResult out;
-  const bool sampled = SampleTexel<3, 1>(
-      s,
-      [&](const double(&u)[3]) {
-        const double mu_o = std::sqrt(u[0]);
-        const Vec3 o = ViewDirection(mu_o);
-        return std::array<double, 1>{estimator.Sample(o, ndf.MuLambda(mu_o), u[1], u[2]).weight};
-      },
-      SamplesPerTexel(TableKind::kEavg, s), pointSeed, &out);
+  bool sampled;
+  if (VectorisedVisibleNormals(s)) {
+    sampled = SampleTexel<3, 1>(
+        s,
+        [&](const PointView &p, double *w[]) {
+          kernel::GgxVisibleNormalWeights(alpha, s.smith, 0.0, 0.0, p.n, p.cosPhi, p.sinPhi, p.u[2],
+                                          p.u[0], w[0], nullptr);
+        },
+        samples, seed, &out);
+  } else {
+    sampled = SampleTexel<3, 1>(
+        s,
+        [&](const PointView &p, double *w[]) {
+          for (size_t k = 0; k < p.n; ++k) {
+            const double mu_o = std::sqrt(p.u[0][k]);
+            const Vec3 o = ViewDirection(mu_o);
+            w[0][k] = estimator.Sample(o, ndf.MuLambda(mu_o), p.u[1][k], p.u[2][k]).weight;
+          }
+        },
+        samples, seed, &out);
+  }
   if (sampled) return out;
   TexelResult q = PanelAverage(s, ndf);
   q.samples = out.samples;

@@ -2,13 +2,21 @@
 // scrambles.
 //
 // A texel's N samples are split into K replicates (K = min(replicates, N));
-// replicate k uses Sobol points 0 .. n_k - 1 (n_k = N / K, the first N mod K
-// replicates one more), Owen-scrambled with seeds derived from
-// (texelSeed, k, dimension); or, for plain Monte Carlo, independent points. Each replicate mean m_k
-// is an unbiased estimate of the integral, and the K of them are independent, so
+// replicate k uses points 0 .. n_k - 1 of its own point set (n_k = N / K,
+// the first N mod K replicates one more): Owen-scrambled Sobol points with
+// seeds derived from (seed, k, dimension), or, for plain Monte Carlo,
+// independent points (point_blocks.h). Each replicate mean m_k is an
+// unbiased estimate of the integral, and the K of them are independent, so
 //   estimate        = (1/K) sum_k m_k
 //   standard error  = sqrt( sum_k (m_k - estimate)^2 / (K (K - 1)) ).
-// Sums over samples use Neumaier's compensated summation.
+//
+// The samples are evaluated in batches (up to a block of points at a time,
+// which a SIMD kernel can take whole) and summed in chunks of 256 aligned
+// on the sample index: within a chunk, sample i goes into partial sum
+// i mod 4; a finished chunk's sum ((s0 + s1) + (s2 + s3)) is added to the
+// replicate's total with Neumaier's compensated summation. The sum of the
+// first n samples therefore depends on n alone, not on how they were
+// batched, nor on which rounds of a tolerance run brought them in.
 #pragma once
 
 #include <algorithm>
@@ -16,9 +24,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "lutbake/hash.h"
 #include "lutbake/math.h"
-#include "lutbake/sobol.h"
+#include "lutbake/point_blocks.h"
 
 namespace lutbake {
 
@@ -43,74 +50,80 @@ struct CompensatedSum {
   double Value() const { return sum + compensation; }
 };
 
-enum class PointSet {
-  kScrambledSobol,     // Owen-scrambled Sobol points, one scramble per replicate
-  kIndependentRandom,  // independent uniform points (plain Monte Carlo)
-};
-
 // Two-sided 99% quantile of Student's t with `dof` degrees of freedom: the
 // error bound is this many standard errors, so that it holds for 99% of
 // texels even though only K replicate means estimate the standard error.
 double StudentT99(int dof);
 
+// Samples per chunk of the summation (see above).
+inline constexpr uint64_t kSumChunk = 256;
+
 // The replicates of one texel, resumable: Extend(n) brings every replicate
 // to n samples, continuing each replicate's own point sequence, so that a
 // tolerance run's rounds (n, 2n, 4n, ...) end with exactly the estimate a
 // single run of the final size gives.
+//
+// A batch function `batch(const PointView &points, double *out[Channels])`
+// writes the weights of points.n samples; a sample function
+// `sample(const double (&u)[Dims])` returns std::array<double, Channels> for
+// one. Dims is 2 or 3.
 template <int Dims, int Channels>
 class ReplicatedAccumulator {
  public:
   static constexpr int kMaxReplicates = 64;
+  static_assert(Dims >= 2 && Dims <= kMaxPointDimensions, "2 or 3 dimensions");
 
-  ReplicatedAccumulator(int replicates, uint64_t texelSeed, PointSet points)
-      : replicates_(std::clamp(replicates, 1, kMaxReplicates)), points_(points) {
-    static_assert(Dims <= kSobolDimensions, "not enough Sobol dimensions");
-    for (int r = 0; r < replicates_; ++r) {
-      for (int d = 0; d < Dims; ++d)
-        seeds_[r][d] = HashValues({texelSeed, static_cast<uint64_t>(r), static_cast<uint64_t>(d)});
-    }
-  }
+  ReplicatedAccumulator(int replicates, uint64_t seed, PointSet points)
+      : replicates_(std::clamp(replicates, 1, kMaxReplicates)), seed_(seed), points_(points) {}
 
   int replicates() const { return replicates_; }
-  uint64_t samplesPerReplicate() const { return counts_[0]; }
+  uint64_t samplesPerReplicate() const { return sums_[0].count; }
   uint64_t samples() const {
     uint64_t total = 0;
-    for (int r = 0; r < replicates_; ++r) total += counts_[r];
+    for (int r = 0; r < replicates_; ++r) total += sums_[r].count;
     return total;
   }
 
-  // Replicate r to n samples (never fewer than it has).
-  template <typename SampleFn>
-  void ExtendReplicate(const SampleFn &sample, int r, uint64_t n) {
-    for (uint64_t i = counts_[r]; i < n; ++i) {
-      double u[Dims];
-      if (points_ == PointSet::kScrambledSobol) {
-        for (int d = 0; d < Dims; ++d)
-          u[d] = ScrambledSobol(static_cast<uint32_t>(i), d, static_cast<uint32_t>(seeds_[r][d]));
-      } else {
-        // Counter-based: point i of replicate r is a hash of both, so any
-        // prefix of the stream is reproducible without replaying it.
-        for (int d = 0; d < Dims; ++d)
-          u[d] = (static_cast<double>(MixBits(seeds_[r][d] + MixBits(i)) >> 11) + 0.5) * 0x1p-53;
-      }
-      const std::array<double, Channels> value = sample(u);
-      for (int c = 0; c < Channels; ++c) sums_[r][c].Add(value[c]);
+  // Replicate r to n samples (never fewer than it has), in batches.
+  template <typename BatchFn>
+  void ExtendReplicateBatched(const BatchFn &batch, int r, uint64_t n) {
+    PointBlockStorage scratch;
+    double buffer[Channels][kPointBlockSize];
+    double *out[Channels];
+    for (int c = 0; c < Channels; ++c) out[c] = buffer[c];
+    while (sums_[r].count < n) {
+      const uint64_t i = sums_[r].count, block = i / kPointBlockSize;
+      const uint64_t offset = i % kPointBlockSize;
+      const uint64_t count = std::min<uint64_t>(kPointBlockSize - offset, n - i);
+      PointView view = PointBlock(points_, seed_, Dims, r, block, &scratch).Skip(offset);
+      view.n = count;
+      batch(view, out);
+      Add(r, out, count);
     }
-    counts_[r] = std::max(counts_[r], n);
   }
 
-  template <typename SampleFn>
-  void Extend(const SampleFn &sample, uint64_t n) {
-    for (int r = 0; r < replicates_; ++r) ExtendReplicate(sample, r, n);
+  template <typename BatchFn>
+  void ExtendBatched(const BatchFn &batch, uint64_t n) {
+    for (int r = 0; r < replicates_; ++r) ExtendReplicateBatched(batch, r, n);
   }
 
   // N samples in all, split over the replicates: n = N / K each, the first
   // N mod K replicates one more.
-  template <typename SampleFn>
-  void ExtendTotal(const SampleFn &sample, uint64_t total) {
+  template <typename BatchFn>
+  void ExtendTotalBatched(const BatchFn &batch, uint64_t total) {
     const uint64_t k = static_cast<uint64_t>(replicates_);
     for (int r = 0; r < replicates_; ++r)
-      ExtendReplicate(sample, r, total / k + (static_cast<uint64_t>(r) < total % k ? 1 : 0));
+      ExtendReplicateBatched(batch, r, total / k + (static_cast<uint64_t>(r) < total % k ? 1 : 0));
+  }
+
+  // The same with a function of one sample.
+  template <typename SampleFn>
+  void Extend(const SampleFn &sample, uint64_t n) {
+    ExtendBatched(PerSample(sample), n);
+  }
+  template <typename SampleFn>
+  void ExtendTotal(const SampleFn &sample, uint64_t total) {
+    ExtendTotalBatched(PerSample(sample), total);
   }
 
   ReplicatedEstimate<Channels> Estimate() const {
@@ -131,26 +144,61 @@ class ReplicatedAccumulator {
   }
 
  private:
+  struct ReplicateSum {
+    uint64_t count = 0;
+    std::array<CompensatedSum, Channels> total{};
+    double chunk[Channels][4] = {};
+  };
+
+  template <typename SampleFn>
+  static auto PerSample(const SampleFn &sample) {
+    return [&sample](const PointView &points, double *out[Channels]) {
+      for (size_t k = 0; k < points.n; ++k) {
+        double u[Dims];
+        for (int d = 0; d < Dims; ++d) u[d] = points.u[d][k];
+        const std::array<double, Channels> value = sample(u);
+        for (int c = 0; c < Channels; ++c) out[c][k] = value[c];
+      }
+    };
+  }
+
+  static double ChunkSum(const double (&s)[4]) { return (s[0] + s[1]) + (s[2] + s[3]); }
+
+  void Add(int r, double *const weights[Channels], uint64_t count) {
+    ReplicateSum &s = sums_[r];
+    for (uint64_t k = 0; k < count; ++k) {
+      const uint64_t i = s.count + k;
+      for (int c = 0; c < Channels; ++c) s.chunk[c][i % 4] += weights[c][k];
+      if ((i + 1) % kSumChunk == 0)
+        for (int c = 0; c < Channels; ++c) {
+          s.total[c].Add(ChunkSum(s.chunk[c]));
+          for (double &partial : s.chunk[c]) partial = 0.0;
+        }
+    }
+    s.count += count;
+  }
+
   double ReplicateMean(int r, int c) const {
-    return counts_[r] ? sums_[r][c].Value() / static_cast<double>(counts_[r]) : 0.0;
+    const ReplicateSum &s = sums_[r];
+    if (s.count == 0) return 0.0;
+    return (s.total[c].Value() + ChunkSum(s.chunk[c])) / static_cast<double>(s.count);
   }
 
   int replicates_;
+  uint64_t seed_;
   PointSet points_;
-  uint64_t seeds_[kMaxReplicates][Dims];
-  uint64_t counts_[kMaxReplicates] = {};
-  std::array<CompensatedSum, Channels> sums_[kMaxReplicates] = {};
+  ReplicateSum sums_[kMaxReplicates] = {};
 };
 
 // One-shot form: N samples split over K = min(replicates, N) replicates, the
-// first N mod K replicates one sample more.
+// first N mod K replicates one more.
 // sample(const double (&u)[Dims]) returns std::array<double, Channels>.
 template <int Dims, int Channels, typename SampleFn>
 ReplicatedEstimate<Channels> IntegrateReplicated(const SampleFn &sample, uint64_t samples,
-                                                 int replicates, uint64_t texelSeed,
+                                                 int replicates, uint64_t seed,
                                                  PointSet points = PointSet::kScrambledSobol) {
   const int k = static_cast<int>(std::max<uint64_t>(1, std::min<uint64_t>(replicates, samples)));
-  ReplicatedAccumulator<Dims, Channels> accumulator(k, texelSeed, points);
+  ReplicatedAccumulator<Dims, Channels> accumulator(k, seed, points);
   accumulator.ExtendTotal(sample, samples);
   return accumulator.Estimate();
 }
