@@ -409,9 +409,10 @@ AverageQuadrature IntegrateAverageQuadrature(const Ndf &ndf, SmithForm smith, do
   PanelList panels;
   PushGraded(0.0, 1.0, std::min(ndf.alpha, kFirstAveragePanel), false, 0.5, 0.0, 1.0, &panels);
   AverageQuadrature result;
-  Sums previous = AverageAtLevel(ndf, smith, tolerance, 0, panels);
+  const int first = FirstLevel(ndf);
+  Sums previous = AverageAtLevel(ndf, smith, tolerance, first, panels);
   result.evaluations = previous.evaluations;
-  for (int k = 1; k < kQuadratureLevels; ++k) {
+  for (int k = first + 1; k < kQuadratureLevels; ++k) {
     const Sums current = AverageAtLevel(ndf, smith, tolerance, k, panels);
     result.evaluations += current.evaluations;
     result.value = current.A;

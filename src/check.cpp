@@ -49,6 +49,9 @@ struct Loaded {
   bool perTexelErrors = false;  // table.errors holds per-texel bounds (else errorMax)
   double statedErrorMax = 0.0;  // metadata errorMax (+ storageError)
   double storageError = 0.0;    // a half-storage header's stated rounding, when it is primary
+  // The files state bounds of their stored values, rounding included
+  // (metadata errorStorage, storage.h): no float rounding is allowed on top.
+  bool boundsCoverStorage = false;
   NdfKind ndf = NdfKind::kGgx;
   SmithForm smith = SmithForm::kCorrelated;
   FresnelModel fresnel = FresnelModel::kSchlick;
@@ -59,6 +62,12 @@ struct Loaded {
   // The bound a texel's value claims: its own, or the stated maximum.
   double Bound(size_t i) const { return perTexelErrors ? table.errors[i] : statedErrorMax; }
 };
+
+// A .bin written with --bin-type double (errorStorage=float64).
+bool BinIsFloat64(const Table &bin) {
+  const std::string *storage = bin.FindMetadata("errorStorage");
+  return storage && *storage == "float64";
+}
 
 // Coordinates of a point for the report, named by the table's axes.
 std::vector<std::pair<std::string, double>> At(const Table &t, double x, double y) {
@@ -200,11 +209,17 @@ class Checker {
         return;
       }
       t.storageError = extra;
-      t.statedErrorMax += extra;
+      // Older headers stated errorMax for the float values; the half rounding
+      // is theirs to add. Now kErrorMax covers it (errorStorage=half).
+      if (!t.boundsCoverStorage) t.statedErrorMax += extra;
     }
-    // Per-texel bounds: the .bin error block, else T.err.exr.
+    // Per-texel bounds: the .bin error block, else T.err.exr. A float64 .bin
+    // bounds its own values: for the primary's, its rounding is added.
     if (bin && bin->errors.size() == t.table.values.size()) {
       t.table.errors = bin->errors;
+      if (BinIsFloat64(*bin))
+        for (size_t i = 0; i < t.table.errors.size(); ++i)
+          t.table.errors[i] += std::abs(t.table.values[i] - bin->values[i]);
       t.perTexelErrors = true;
     } else if (err && err->values.size() == t.table.values.size()) {
       t.table.errors = err->values;
@@ -233,6 +248,7 @@ class Checker {
     if (table.channels != channels)
       problems.push_back(std::to_string(table.channels) + " channels, expected " +
                          std::to_string(channels));
+    t.boundsCoverStorage = table.FindMetadata("errorStorage") != nullptr;
     const std::string errorMax = meta("errorMax");
     char *end = nullptr;
     t.statedErrorMax = std::strtod(errorMax.c_str(), &end);
@@ -335,7 +351,7 @@ class Checker {
     }
     if (err) {
       sameAxes(*err, name + ".err.exr");
-      if (bin && bin->errors.size() == err->values.size()) {
+      if (bin && !BinIsFloat64(*bin) && bin->errors.size() == err->values.size()) {
         for (size_t i = 0; i < err->values.size(); ++i)
           if (static_cast<float>(err->values[i]) != static_cast<float>(bin->errors[i])) {
             problems.push_back(name + ".err.exr differs from the error block of " + name + ".bin");
@@ -348,12 +364,17 @@ class Checker {
         problems.push_back(name + ".err.exr has max " + FormatDouble(maxError) +
                            ", the metadata says errorMax " + FormatDouble(t.statedErrorMax));
     }
-    if (t.perTexelErrors && !err) {
-      double maxError = 0.0;
-      for (double e : t.table.errors) maxError = std::max(maxError, e);
-      if (static_cast<float>(maxError) != static_cast<float>(t.statedErrorMax))
+    if (bin && bin->errors.size() == bin->values.size()) {
+      // The error block against the .bin's own errorMax (a float64 .bin
+      // states smaller bounds than the float32 files).
+      double maxError = 0.0, stated = -1.0;
+      for (double e : bin->errors) maxError = std::max(maxError, e);
+      if (const std::string *m = bin->FindMetadata("errorMax"))
+        stated = std::strtod(m->c_str(), nullptr);
+      const bool wide = BinIsFloat64(*bin);
+      if (wide ? maxError != stated : static_cast<float>(maxError) != static_cast<float>(stated))
         problems.push_back(name + ".bin's error block has max " + FormatDouble(maxError) +
-                           ", the metadata says errorMax " + FormatDouble(t.statedErrorMax));
+                           ", its metadata says errorMax " + FormatDouble(stated));
     }
     if (!problems.empty()) {
       std::string detail;
@@ -529,7 +550,8 @@ class Checker {
     size_t worstIndex = 0, realIndex = 0, outside = 0, overStated = 0;
     for (size_t i = 0; i < texels * table.channels; ++i) {
       const double real = std::abs(table.values[i] - t.ref[i]);
-      const double slack = t.refError[i] + FloatRounding(table.values[i]);
+      const double slack =
+          t.refError[i] + (t.boundsCoverStorage ? 0.0 : FloatRounding(table.values[i]));
       // The hard claim: within the stated maximum of the whole table.
       const double stated = std::max(t.statedErrorMax, t.Bound(i)) + slack;
       if (real > stated) ++overStated;

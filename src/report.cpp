@@ -54,8 +54,7 @@ ReportRow Measure(TableKind kind, const BakeSettings &b,
   row.seconds = stats.seconds;
   const size_t texels = ref.size();
   row.samplesPerTexel =
-      static_cast<double>(b.estimator == Estimator::kQuadrature ? stats.evaluations
-                                                                : stats.samples) /
+      static_cast<double>(IsQuadrature(b.estimator) ? stats.evaluations : stats.samples) /
       static_cast<double>(texels);
   double sumSq = 0;
   size_t within = 0;
@@ -109,7 +108,7 @@ std::vector<ReportRow> RunReport(const ReportSettings &s, const ReportProgressFn
       BakeSettings b = BaseSettings(s);
       b.estimator = estimator;
       double spent = 0, last = 0;
-      const bool quadrature = estimator == Estimator::kQuadrature;
+      const bool quadrature = IsQuadrature(estimator);
       for (int step = 0;; ++step) {
         if (quadrature) {
           b.tolerance = std::pow(10.0, -2 - step);
@@ -164,7 +163,8 @@ std::string ReportMarkdown(const ReportSettings &s, const std::vector<ReportRow>
       << s.budgetSeconds << " s in total; " << std::thread::hardware_concurrency()
       << " hardware threads.\n\n"
       << "Real error of every texel against the quadrature at 1e-12 (E_avg: 1e-11). "
-         "Sampled estimators: 4 replicates; samples per texel as listed. Quadrature: "
+         "Sampled estimators: 4 replicates; samples per texel as listed. The two quadratures "
+         "(quadrature: the default panel rule; adaptive: nested adaptive Gauss-Kronrod): "
          "integrand evaluations per texel at the tolerance listed.\n\n";
   for (TableKind kind : s.tables) {
     out << "## " << TableName(kind) << "\n\n### Time to reach a max error\n\n"
@@ -213,8 +213,8 @@ std::string ReportMarkdown(const ReportSettings &s, const std::vector<ReportRow>
 std::string ReportSvg(const ReportSettings &s, const std::vector<ReportRow> &rows) {
   constexpr double kPanelWidth = 520, kPanelHeight = 400;
   constexpr double kLeft = 70, kRight = 150, kTop = 40, kBottom = 50;
-  static const char *kColours[] = {"#7f7f7f", "#bcbd22", "#ff7f0e",
-                                   "#9467bd", "#1f77b4", "#2ca02c"};
+  static const char *kColours[] = {"#7f7f7f", "#bcbd22", "#ff7f0e", "#9467bd",
+                                   "#1f77b4", "#2ca02c", "#d62728"};
   std::ostringstream out;
   const double width = kPanelWidth * static_cast<double>(s.tables.size());
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\""

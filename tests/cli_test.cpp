@@ -79,33 +79,43 @@ std::string ReadFile(const fs::path &p) {
   return std::string((std::istreambuf_iterator<char>(in)), {});
 }
 
-TEST(Cli, OutputIsByteIdenticalForOneAndTwoThreads) {
-  const fs::path a = Scratch("t1"), b = Scratch("t2");
-  // The command line (with the directory and --threads) is recorded in every
-  // file; it is blanked out below before the byte comparison.
-  ASSERT_EQ(Lutbake("bake --out " + a.string() + " --size 8 --samples 128 --threads 1").status, 0);
-  ASSERT_EQ(Lutbake("bake --out " + b.string() + " --size 8 --samples 128 --threads 2").status, 0);
+// Bakes with `options` at each thread count (written with two digits, so
+// that every recorded command line has the same length) and compares every
+// file byte for byte, the command lines blanked out.
+void ExpectSameFilesForThreadCounts(const std::string &options, int files) {
+  std::vector<fs::path> dirs;
+  std::vector<std::string> args;
+  for (const char *threads : {"01", "02", "16"}) {
+    dirs.push_back(Scratch(std::string("t") + threads));
+    args.push_back(dirs.back().string() + " " + options + " --threads " + threads);
+    ASSERT_EQ(Lutbake("bake --out " + args.back()).status, 0) << args.back();
+  }
   int compared = 0;
-  for (const auto &entry : fs::directory_iterator(a)) {
+  for (const auto &entry : fs::directory_iterator(dirs[0])) {
     const std::string name = entry.path().filename().string();
-    ASSERT_TRUE(fs::exists(b / name)) << name;
     if (name.find(".tmp") != std::string::npos) ADD_FAILURE() << "temporary left: " << name;
-    // Blank out the recorded command lines (they name the directory and
-    // --threads) and compare the rest byte for byte.
-    std::string x = ReadFile(a / name), y = ReadFile(b / name);
-    for (std::string *s : {&x, &y}) {
-      for (const std::string &arg : {a.string() + " --size 8 --samples 128 --threads 1",
-                                     b.string() + " --size 8 --samples 128 --threads 2"}) {
-        for (size_t at = s->find(arg); at != std::string::npos; at = s->find(arg))
-          s->replace(at, arg.size(), std::string(arg.size(), '#'));
-      }
+    std::vector<std::string> contents;
+    for (const fs::path &dir : dirs) {
+      ASSERT_TRUE(fs::exists(dir / name)) << name;
+      std::string text = ReadFile(dir / name);
+      for (const std::string &arg : args)
+        for (size_t at = text.find(arg); at != std::string::npos; at = text.find(arg))
+          text.replace(at, arg.size(), std::string(arg.size(), '#'));
+      contents.push_back(text);
     }
-    EXPECT_EQ(x, y) << name;
+    for (size_t k = 1; k < contents.size(); ++k) EXPECT_EQ(contents[k], contents[0]) << name;
     ++compared;
   }
-  EXPECT_EQ(compared, 13);  // 4 tables x (exr, bin, h) and kulla_conty.h
-  fs::remove_all(a);
-  fs::remove_all(b);
+  EXPECT_EQ(compared, files);
+  for (const fs::path &dir : dirs) fs::remove_all(dir);
+}
+
+TEST(Cli, OutputIsByteIdenticalForOneTwoAndSixteenThreads) {
+  // The default bake (quadrature), with the error maps and a float64 .bin;
+  // and the sampled one. 4 tables x (exr, bin, h), kulla_conty.h, and for
+  // the first the 4 error maps.
+  ExpectSameFilesForThreadCounts("--size 8 --error-map --bin-type double", 17);
+  ExpectSameFilesForThreadCounts("--size 8 --samples 128", 13);
 }
 
 TEST(Cli, JsonSummary) {

@@ -66,7 +66,8 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
       ->check(InRange(1, kMaxSize, "texels per axis"));
   AddSamplingOptions(app, o.sampling, "texel");
   app.add_flag("--error-map", o.errorMap,
-               "Also write T.err.exr: the per-texel error bound, same layout and channels as T");
+               "Also write T.err.exr: the per-texel bound of T.exr's float32 values (their "
+               "rounding included), same layout and channels as T");
   AddThreadsOption(app, o.threads, "; output does not depend on it");
   app.add_option("--format", o.formats, "Files to write per table: T.exr, T.bin, T.h")
       ->capture_default_str()
@@ -76,8 +77,8 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
       ->check(CppNamespace());
   app.add_option("--header-type", o.headerType,
                  "Storage of the values in T.h: float (exact float32) or half (IEEE binary16 in "
-                 "uint16_t: half the bytes, adds at most 2^-12 for values in [0, 1], stated in "
-                 "the header)")
+                 "uint16_t: half the bytes, adds at most 2^-12 for values in [0, 1]; kErrorMax "
+                 "includes it)")
       ->capture_default_str()
       ->check(OneOf({"float", "half"}));
   app.add_option("--bin-type", o.binType,

@@ -9,7 +9,7 @@ namespace lutbake::cli {
 struct ReportOptions {
   std::string outDir;
   std::string tables = "E,dfg";
-  std::string estimators = "uniform,cosine,ndf,vndf-random,vndf,quadrature";
+  std::string estimators = "uniform,cosine,ndf,vndf-random,vndf,adaptive,quadrature";
   std::string ndf = "ggx";
   std::string smith = "correlated";
   int size = 32;

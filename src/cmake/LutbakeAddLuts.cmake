@@ -5,15 +5,15 @@
 #                    [TABLES E Eavg Favg dfg]   # default: all four (or the plan's)
 #                    [SCENE file.gltf ...]      # bake only what the scenes need
 #                    [MANIFEST file.json ...]
-#                    [OPTIONS --tolerance 1e-6 --namespace engine::luts ...])
+#                    [OPTIONS --namespace engine::luts ...])
 #
 # The headers are written to <binary dir>/lutbake_luts/<target>/lutbake_luts/
 # and both that folder and its parent are added to <target>'s include path,
 # so the target includes <lutbake_luts/E.h> (or "E.h"), Eavg.h, Favg.h,
 # dfg.h and kulla_conty.h. OPTIONS are passed to `lutbake bake` verbatim
-# (any of its options but --out). Defaults here: --format header, and
-# --tolerance 1e-6 unless OPTIONS give --tolerance, --samples, --estimator
-# or --replicates.
+# (any of its options but --out). The default here is --format header; the
+# integration is the CLI's default (float32-exact, a fraction of a second
+# for the default set) unless OPTIONS choose another.
 #
 # The bake is an add_custom_command: it reruns only when one of its inputs
 # changes: the lutbake executable, a SCENE or MANIFEST file, or the
@@ -73,18 +73,6 @@ function(lutbake_add_luts target)
   endforeach()
   if(NOT "--format" IN_LIST ARG_OPTIONS)
     list(APPEND args --format header)
-  endif()
-  # Unless OPTIONS choose how to integrate, every texel to 1e-6 by the
-  # quadrature: about 6 s on 2 cores for the default set, where the CLI's
-  # sampled default takes 80 s for bounds near 6e-4.
-  set(chooses OFF)
-  foreach(flag --tolerance --samples --estimator --replicates)
-    if(flag IN_LIST ARG_OPTIONS)
-      set(chooses ON)
-    endif()
-  endforeach()
-  if(NOT chooses)
-    list(APPEND args --tolerance 1e-6)
   endif()
   list(APPEND args ${ARG_OPTIONS})
 
