@@ -159,10 +159,12 @@ struct PointValue {
   bool exact = false;  // a closed form (the mirror, alpha = 0): error 0 by construction
 };
 
-// The seed of a sampled point: a hash of the table, the point's coordinates
-// (their bit patterns) and the user's seed. A bake seeds each texel with the
-// seed of its centre, so `lutbake eval` at a texel centre with the bake's
-// settings reproduces that texel bit for bit.
+// The seed of a sampled point's independent random points (vndf-random,
+// cosine, uniform): a hash of the table, the point's coordinates (their bit
+// patterns) and the user's seed. A bake seeds each texel with the seed of
+// its centre; scrambled Sobol points are shared by a whole table instead
+// (point_blocks.h). Either way `lutbake eval` at a texel centre with the
+// bake's settings reproduces that texel bit for bit.
 uint64_t PointSeed(TableKind kind, double x, double y, uint64_t seed);
 
 // E (channel 0) or the split sum (A, B) at (mu_o, alpha), with the settings'
