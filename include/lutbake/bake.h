@@ -65,8 +65,8 @@ inline constexpr int kToleranceReplicates = 8;
 // In a tolerance run, a sampled texel whose bound predicts (error ~ 1/N, the
 // rate `lutbake report` measures for the sampled estimators) more than this
 // many samples to reach EPS is integrated by the quadrature instead, which
-// costs about as much: a texel of the panel quadrature takes 5.3 us, 830
-// visible-normal samples at 156 million a second (scripts/benchmark.sh).
+// costs about as much: a texel of the panel quadrature takes 5.1 us, 860
+// visible-normal samples at 167 million a second (scripts/benchmark.sh).
 inline constexpr uint64_t kQuadratureSwitchSamples = 1024;
 // A sampled texel's bound adds kUnseenEventCount / N for events that none of
 // its N samples met (-ln 0.01: bake.cpp, SampleTexel, says why).
