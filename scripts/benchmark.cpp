@@ -19,11 +19,11 @@
 
 #include <cmath>
 
-#include "lutbake/albedo_estimator.h"
-#include "lutbake/bake.h"
-#include "lutbake/hash.h"
-#include "lutbake/replicated_integrator.h"
-#include "lutbake/sobol.h"
+#include "lutbake/core/hash.h"
+#include "lutbake/integrators/albedo_estimator.h"
+#include "lutbake/integrators/replicated_integrator.h"
+#include "lutbake/integrators/sobol.h"
+#include "lutbake/tables/bake.h"
 
 namespace {
 

@@ -6,8 +6,8 @@
 #include <chrono>
 #include <cstdlib>
 
-#include "lutbake/bake.h"
-#include "lutbake/reference_integrator.h"
+#include "lutbake/integrators/reference_integrator.h"
+#include "lutbake/tables/bake.h"
 using namespace lutbake;
 static int Measure(int argc, char **argv) {
   BakeSettings s;

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "lutbake/binary_format.h"
-#include "lutbake/reference_integrator.h"
-#include "lutbake/writer.h"
+#include "lutbake/formats/binary_format.h"
+#include "lutbake/formats/writer.h"
+#include "lutbake/integrators/reference_integrator.h"
 
 namespace {
 

@@ -14,10 +14,10 @@
 #include <thread>
 
 #include "cli_util.h"
-#include "lutbake/atomic_output.h"
-#include "lutbake/plan.h"
-#include "lutbake/storage.h"
-#include "lutbake/writer.h"
+#include "lutbake/formats/atomic_output.h"
+#include "lutbake/formats/writer.h"
+#include "lutbake/plans/plan.h"
+#include "lutbake/tables/storage.h"
 
 namespace lutbake::cli {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "lutbake/bake.h"
+#include "lutbake/tables/bake.h"
 #include "plan_command.h"
 #include "sampling_options.h"
 

@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_util.h"
-#include "lutbake/check.h"
-#include "lutbake/writer.h"
+#include "lutbake/formats/writer.h"
+#include "lutbake/validation/check.h"
 
 namespace lutbake::cli {
 

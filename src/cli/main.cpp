@@ -6,7 +6,7 @@
 #include "bake_command.h"
 #include "check_command.h"
 #include "eval_command.h"
-#include "lutbake/bake.h"
+#include "lutbake/tables/bake.h"
 #include "plan_command.h"
 #include "report_command.h"
 

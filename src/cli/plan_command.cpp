@@ -4,8 +4,8 @@
 #include <iostream>
 
 #include "cli_util.h"
-#include "lutbake/manifest.h"
-#include "lutbake/scene.h"
+#include "lutbake/plans/manifest.h"
+#include "lutbake/plans/scene.h"
 
 namespace lutbake::cli {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "lutbake/plan.h"
+#include "lutbake/plans/plan.h"
 
 namespace lutbake::cli {
 

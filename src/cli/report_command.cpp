@@ -11,9 +11,9 @@
 
 #include "bake_command.h"
 #include "cli_util.h"
-#include "lutbake/atomic_output.h"
-#include "lutbake/report.h"
-#include "lutbake/writer.h"
+#include "lutbake/formats/atomic_output.h"
+#include "lutbake/formats/writer.h"
+#include "lutbake/validation/report.h"
 #include "sampling_options.h"
 
 namespace lutbake::cli {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "lutbake/bake.h"
+#include "lutbake/tables/bake.h"
 
 namespace lutbake::cli {
 

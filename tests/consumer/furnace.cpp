@@ -21,11 +21,11 @@
 //      bilinear Lookup on the same tables.
 //
 // Returns 0 when every check passes; prints each failure.
-#include <lutbake/binary_format.h>
-#include <lutbake/lookup.h>
-#include <lutbake/ndf.h>
-#include <lutbake/reference_integrator.h>
-#include <lutbake/smith.h>
+#include <lutbake/formats/binary_format.h>
+#include <lutbake/integrators/reference_integrator.h>
+#include <lutbake/models/ndf.h>
+#include <lutbake/models/smith.h>
+#include <lutbake/tables/lookup.h>
 #include <lutbake_luts/E.h>
 #include <lutbake_luts/Eavg.h>
 #include <lutbake_luts/dfg.h>

@@ -4,9 +4,9 @@
 // lookups at every mu texel centre must lie within the table's kErrorMax of
 // the library's reference quadrature. No Eavg was asked for, so no
 // kulla_conty.h is written (checked by run.sh).
-#include <lutbake/ndf.h>
-#include <lutbake/reference_integrator.h>
-#include <lutbake/smith.h>
+#include <lutbake/integrators/reference_integrator.h>
+#include <lutbake/models/ndf.h>
+#include <lutbake/models/smith.h>
 #include <lutbake_luts/E.h>
 #include <lutbake_luts/dfg.h>
 

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "lutbake/manifest.h"
-#include "lutbake/plan.h"
+#include "lutbake/plans/manifest.h"
+#include "lutbake/plans/plan.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   const std::string_view text(reinterpret_cast<const char *>(data), size);

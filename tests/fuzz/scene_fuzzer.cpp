@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "lutbake/plan.h"
-#include "lutbake/scene.h"
+#include "lutbake/plans/plan.h"
+#include "lutbake/plans/scene.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   const std::string_view bytes(reinterpret_cast<const char *>(data), size);

@@ -1,0 +1,106 @@
+// A bake plan: from the materials of some scenes and manifests, the tables
+// they need, over only the ranges they use, and why every other table is
+// left out.
+//
+// Rules (README, "Bake plans"):
+//   - Unlit materials, and materials with no specular lobe, need nothing.
+//   - dfg (split-sum IBL) for the materials shaded with image-based lighting;
+//     E and E_avg for those with Kulla-Conty energy compensation. Both are
+//     on unless --no-ibl / --no-compensation, the manifest's "lighting", or
+//     the material itself says otherwise (the command line wins).
+//   - Favg only for compensated materials whose Fresnel is not Schlick's
+//     (Schlick's F_avg = 20/21 F0 + 1/21 F90 exactly: the Favg.h header then
+//     carries that function and no table), over just the IORs used.
+//   - The roughness axis of E, E_avg and dfg covers what their materials
+//     use, every layer (clearcoat too): a layer with a roughness texture
+//     covers [0, factor], one without exactly its factor. When every use is
+//     exact and there are at most kMaxListedRoughness distinct values, the
+//     axis lists them (a row at exactly each value); otherwise it is linear
+//     over [min, max] of all uses, with as many rows as the full [0, 1] axis
+//     would spend on that interval (at least 2), so the texel spacing does not
+//     grow.
+//   - Tables are named E, Eavg, dfg, Favg; when a plan needs two variants of
+//     one (GGX and Beckmann materials, say), the ones that are not GGX with
+//     the height-correlated Smith term get a suffix: E_beckmann,
+//     E_separable, E_beckmann_separable; Favg_dielectric and Favg_conductor
+//     when both appear.
+//   - Features lutbake does not bake (sheen, transmission, ...) are listed as
+//     unsupported; the plan still holds the tables of those materials'
+//     other lobes.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lutbake/plans/material.h"
+#include "lutbake/tables/bake.h"
+
+namespace lutbake {
+
+inline constexpr int kMaxListedRoughness = 16;
+
+struct PlanOptions {
+  // Command line: false switches the term off for every material.
+  bool ibl = true;
+  bool compensation = true;
+  // Manifest "lighting": the default for materials that do not say.
+  std::optional<bool> defaultIbl;
+  std::optional<bool> defaultCompensation;
+  int maxListedRoughness = kMaxListedRoughness;
+  // Texels per axis of the full tables (the bake's --size, or 32 / 128).
+  int sizeE = 32, sizeEavg = 32, sizeFavg = 32, sizeDfg = 128;
+};
+
+// The values of one parameter that a table must cover.
+struct CoveredRange {
+  double min = 0.0, max = 0.0;
+  std::vector<double> values;  // the exact values, when the axis lists them
+};
+
+struct PlannedTable {
+  std::string name;  // file stem and header identifier
+  TableKind kind = TableKind::kE;
+  NdfKind ndf = NdfKind::kGgx;                    // E, Eavg, dfg
+  SmithForm smith = SmithForm::kCorrelated;       // E, Eavg, dfg
+  FresnelModel fresnel = FresnelModel::kSchlick;  // Favg
+  CoveredRange roughness;                         // E, Eavg, dfg
+  CoveredRange eta, k;                            // Favg (k: conductor only)
+  Axis x, y;                                      // the axes it is baked on
+  std::vector<std::string> materials;             // the materials that need it
+};
+
+struct OmittedTable {
+  std::string name;
+  std::string reason;
+};
+
+struct UnsupportedFeature {
+  std::string material;
+  std::string feature;
+};
+
+struct BakePlan {
+  std::vector<MaterialSpec> materials;  // everything read, in order
+  std::vector<PlannedTable> tables;
+  std::vector<OmittedTable> omitted;
+  std::vector<UnsupportedFeature> unsupported;
+  // Favg is omitted because every compensated material uses Schlick: a
+  // header bake writes Favg.h with the closed form instead of a table.
+  bool schlickFavgFunction = false;
+  bool empty() const { return tables.empty(); }
+};
+
+BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions &options);
+
+// The plan as JSON: {"tables": [{"name", "table", "roughness": {"min",
+// "max", "values"?}, "materials", ...}], "omitted": [{"name", "reason"}],
+// "unsupported": [{"material", "feature"}], "materials": [...]}.
+std::string PlanJson(const BakePlan &plan);
+// The plan in words, for people.
+std::string DescribePlan(const BakePlan &plan);
+
+// The settings of one planned table's bake: the plan's model on top of `base`.
+BakeSettings PlannedSettings(const PlannedTable &table, const BakeSettings &base);
+
+}  // namespace lutbake

@@ -1,0 +1,171 @@
+#include "lutbake/formats/table_reader.h"
+
+#include <Imath/half.h>
+#include <ImfChannelList.h>
+#include <ImfDoubleAttribute.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfStringAttribute.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "lutbake/formats/writer.h"
+
+namespace lutbake {
+
+Table ReadExrTable(const std::string &path) {
+  Table table;
+  try {
+    Imf::InputFile file(path.c_str());
+    const Imf::Header &header = file.header();
+    for (auto it = header.begin(); it != header.end(); ++it) {
+      if (const auto *s = dynamic_cast<const Imf::StringAttribute *>(&it.attribute()))
+        table.metadata.emplace_back(it.name(), s->value());
+      else if (const auto *d = dynamic_cast<const Imf::DoubleAttribute *>(&it.attribute()))
+        table.metadata.emplace_back(it.name(), FormatDouble(d->value()));
+    }
+    const Imath::Box2i window = header.dataWindow();
+    const long width = static_cast<long>(window.max.x) - window.min.x + 1;
+    const long height = static_cast<long>(window.max.y) - window.min.y + 1;
+    if (width < 1 || height < 1 || width > (1 << 16) || height > (1 << 16))
+      throw IoError(path + ": image size " + std::to_string(width) + " x " +
+                    std::to_string(height) + " is not a lutbake table");
+    const Imf::ChannelList &channels = header.channels();
+    if (channels.findChannel("R") && channels.findChannel("G"))
+      table.channelNames = {"R", "G"};
+    else if (channels.findChannel("Y"))
+      table.channelNames = {"Y"};
+    else
+      throw IoError(path + ": no Y channel and no R, G channels");
+    table.channels = static_cast<int>(table.channelNames.size());
+    const std::string *axisX = table.FindMetadata("axisX");
+    const std::string *axisY = table.FindMetadata("axisY");
+    if (!axisX || !ParseAxisDescription(*axisX, &table.x))
+      throw IoError(path +
+                    ": attribute axisX missing or not of the form "
+                    "'name linear [min, max], N texels'");
+    const bool axisYParsed = axisY && ParseAxisDescription(*axisY, &table.y);
+    if (!axisYParsed && height == 1) {
+      table.y = LinearAxis("", 0.0, 1.0, 1);  // a 1D table: axisY reads "none (1D table)"
+    } else if (!axisYParsed) {
+      throw IoError(path + ": attribute axisY missing or malformed for a 2D image");
+    }
+    if (table.x.count != width || table.y.count != height)
+      throw IoError(path + ": image is " + std::to_string(width) + " x " + std::to_string(height) +
+                    " but the axes say " + std::to_string(table.x.count) + " x " +
+                    std::to_string(table.y.count));
+    // "T", or "T.err" for an error map (ErrorMapOf).
+    bool known = false;
+    const std::string *name = table.FindMetadata("table");
+    for (TableKind k : kAllTables)
+      if (name && (*name == TableName(k) || *name == std::string(TableName(k)) + ".err")) {
+        table.kind = k;
+        known = true;
+      }
+    if (!known) throw IoError(path + ": attribute 'table' missing or not E, Eavg, Favg or dfg");
+    std::vector<float> pixels(static_cast<size_t>(width) * height * table.channels);
+    Imf::FrameBuffer frame;
+    const size_t xStride = sizeof(float) * table.channels;
+    const size_t yStride = xStride * static_cast<size_t>(width);
+    // The data window may not start at (0, 0): offset the base pointer so
+    // that pixel (min.x, min.y) lands at pixels[0].
+    char *base = reinterpret_cast<char *>(pixels.data()) -
+                 static_cast<ptrdiff_t>(window.min.x) * static_cast<ptrdiff_t>(xStride) -
+                 static_cast<ptrdiff_t>(window.min.y) * static_cast<ptrdiff_t>(yStride);
+    for (int c = 0; c < table.channels; ++c)
+      frame.insert(table.channelNames[c],
+                   Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xStride, yStride));
+    file.setFrameBuffer(frame);
+    file.readPixels(window.min.y, window.max.y);
+    table.values.assign(pixels.begin(), pixels.end());
+  } catch (const IoError &) {
+    throw;
+  } catch (const std::exception &e) {
+    throw IoError("cannot read " + path + ": " + e.what());
+  }
+  return table;
+}
+
+namespace {
+
+// The unsigned integer in `text` after "name = ", or -1.
+long ConstantAfter(const std::string &text, const std::string &name) {
+  const size_t at = text.find(name + " = ");
+  if (at == std::string::npos) return -1;
+  char *end = nullptr;
+  const char *p = text.c_str() + at + name.size() + 3;
+  const long v = std::strtol(p, &end, 10);
+  return end == p ? -1 : v;
+}
+
+}  // namespace
+
+HeaderValues ReadHeaderValues(const std::string &path) {
+  std::ifstream file(path);
+  if (!file) throw IoError("cannot open " + path);
+  std::stringstream buffer;
+  buffer << file.rdbuf();
+  const std::string text = buffer.str();
+  HeaderValues out;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("//", 0) != 0 || line == "//") break;  // the metadata block ends
+    if (line.rfind("//   ", 0) != 0) continue;
+    const size_t colon = line.find(": ");
+    if (colon == std::string::npos) continue;
+    out.metadata.emplace_back(line.substr(5, colon - 5), line.substr(colon + 2));
+  }
+  const long width = ConstantAfter(text, "kWidth"), height = ConstantAfter(text, "kHeight"),
+             channels = ConstantAfter(text, "kChannels");
+  if (width < 1 || height < 1 || channels < 1 || width > (1 << 16) || height > (1 << 16) ||
+      channels > 2)
+    throw IoError(path + ": kWidth, kHeight or kChannels missing or out of range");
+  out.width = static_cast<int>(width);
+  out.height = static_cast<int>(height);
+  out.channels = static_cast<int>(channels);
+  // kValues is float literals ("0.5f") or, with half storage, binary16 bit
+  // patterns ("0x3800").
+  size_t start = text.find("constexpr float kValues[");
+  if (start == std::string::npos) {
+    start = text.find("constexpr std::uint16_t kValues[");
+    out.half = start != std::string::npos;
+  }
+  if (start == std::string::npos)
+    throw IoError(path +
+                  ": no 'constexpr float kValues[' or 'constexpr std::uint16_t kValues[' array");
+  const size_t open = text.find('{', start), close = text.find("};", start);
+  if (open == std::string::npos || close == std::string::npos || close < open)
+    throw IoError(path + ": kValues has no initialiser");
+  const size_t expected = static_cast<size_t>(width) * height * channels;
+  out.values.reserve(expected);
+  const char *p = text.c_str() + open + 1;
+  const char *last = text.c_str() + close;
+  while (p < last) {
+    while (p < last && (*p == ' ' || *p == '\n' || *p == ',')) ++p;
+    if (p >= last) break;
+    char *end = nullptr;
+    if (out.half) {
+      const unsigned long bits = std::strtoul(p, &end, 16);
+      if (end == p || bits > 0xffffu) throw IoError(path + ": kValues holds something not a half");
+      Imath::half h;
+      h.setBits(static_cast<unsigned short>(bits));
+      out.values.push_back(static_cast<float>(h));
+      p = end;
+    } else {
+      const float v = std::strtof(p, &end);
+      if (end == p || *end != 'f') throw IoError(path + ": kValues holds something not a float");
+      out.values.push_back(v);
+      p = end + 1;
+    }
+  }
+  if (out.values.size() != expected)
+    throw IoError(path + ": kValues has " + std::to_string(out.values.size()) + " values, " +
+                  std::to_string(expected) + " expected");
+  return out;
+}
+
+}  // namespace lutbake

@@ -1,0 +1,141 @@
+// Highway compiles this file once per instruction set (foreach_target.h
+// includes it again for each); HWY_DYNAMIC_DISPATCH picks one at run time.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "integrators/albedo_kernel.cpp"
+#include "integrators/albedo_kernel.h"
+
+#include <hwy/foreach_target.h>  // must come before highway.h
+#include <hwy/highway.h>
+
+HWY_BEFORE_NAMESPACE();
+namespace lutbake::kernel {
+namespace HWY_NAMESPACE {
+
+namespace hn = hwy::HWY_NAMESPACE;
+
+// The weighted integrand at x with weight `weight` (one node in each lane),
+// written with two divisions and two square roots. With u = 1 + x^2:
+//   core (T = alpha x):  1 + T^2 = s,          s = 1 + alpha^2 x^2,
+//                        mu_i (1 + T^2) = 2 alpha x sc + mu_o (1 - alpha^2 x^2),
+//                        density (o.h / cos(theta)) = 2 x (alpha x sc + mu_o) / u^2;
+//   tail (T = alpha / x): 1 + T^2 = s / x^2,  s = x^2 + alpha^2,
+//                        mu_i (1 + T^2) x^2 = 2 alpha x sc + mu_o (x^2 - alpha^2),
+//                        density (o.h / cos(theta)) = 2 (alpha sc + mu_o x) / u^2.
+// In both, with r = 1 / (s u^2): mu_i = N u^2 r, o.h = Q u sqrt(r) and
+// density (o.h / cos(theta)) = 2 P s r, where N, Q and P are the numerators
+// above (Q = alpha x sc + mu_o, P = x Q in the core; Q = P = alpha sc + mu_o x
+// in the tail). And with L_i = mu_i
+// Lambda(mu_i) = a2s2 / (2 (root + mu_i)), root = sqrt(mu_i^2 + a2s2),
+// a2s2 = alpha^2 (1 - mu_i^2) (ggx.h), G2 / mu_o (smith.h) is
+//   correlated: 2 mu_i (root + mu_i) / (2 mu_i (root + mu_i) (mu_o + L_o) + mu_o a2s2),
+//   separable:  2 mu_i (root + mu_i) / ((mu_o + L_o) (2 mu_i (root + mu_i) + a2s2)).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void GgxSplitSumLanes(D d, const GgxSplitSumConstants &k, bool tail, V x, V sc, V weight,
+                                 V *a, V *b) {
+  const V one = hn::Set(d, 1.0), two = hn::Set(d, 2.0), zero = hn::Zero(d);
+  const V alpha = hn::Set(d, k.alpha), alpha2 = hn::Set(d, k.alpha * k.alpha);
+  const V mu_o = hn::Set(d, k.mu_o), muL_o = hn::Set(d, k.mu_o + k.L_o);
+  const V x2 = hn::Mul(x, x), u = hn::Add(one, x2), u2 = hn::Mul(u, u);
+  const V ax = hn::Mul(alpha, x), a2x2 = hn::Mul(alpha2, x2);
+  V s, N, Q, P;
+  if (tail) {
+    s = hn::Add(x2, alpha2);
+    N = hn::Add(hn::Mul(hn::Mul(two, ax), sc), hn::Mul(mu_o, hn::Sub(x2, alpha2)));
+    Q = hn::Add(hn::Mul(alpha, sc), hn::Mul(mu_o, x));
+    P = Q;
+  } else {
+    s = hn::Add(one, a2x2);
+    N = hn::Add(hn::Mul(hn::Mul(two, ax), sc), hn::Mul(mu_o, hn::Sub(one, a2x2)));
+    Q = hn::Add(hn::Mul(ax, sc), mu_o);
+    P = hn::Mul(x, Q);
+  }
+  const V r = hn::Div(one, hn::Mul(s, u2));
+  const V mu_i = hn::Mul(hn::Mul(N, u2), r);
+  const V densityQ = hn::Mul(hn::Mul(two, P), hn::Mul(s, r));
+  const V oh = hn::Mul(hn::Mul(Q, u), hn::Sqrt(r));
+  const V a2s2 = hn::Mul(alpha2, hn::Mul(hn::Sub(one, mu_i), hn::Add(one, mu_i)));
+  const V root = hn::Sqrt(hn::Add(hn::Mul(mu_i, mu_i), a2s2));
+  const V m = hn::Mul(hn::Mul(two, mu_i), hn::Add(root, mu_i));  // 2 mu_i (root + mu_i)
+  const V g = k.smith == SmithForm::kCorrelated
+                  ? hn::Div(m, hn::Add(hn::Mul(m, muL_o), hn::Mul(mu_o, a2s2)))
+                  : hn::Div(m, hn::Mul(muL_o, hn::Add(m, a2s2)));
+  const auto visible = hn::And(hn::Gt(mu_i, zero), hn::Gt(Q, zero));
+  const V f = hn::IfThenElseZero(visible, hn::Mul(hn::Mul(weight, densityQ), g));
+  // Schlick: Fc = y^5, 1 - Fc = oh (1 + y + y^2 + y^3 + y^4), y = 1 - oh (math.h).
+  const V y = hn::Sub(one, oh), y2 = hn::Mul(y, y);
+  const V fc = hn::Mul(hn::Mul(y2, y2), y);
+  const V complement =
+      hn::Mul(oh, hn::Add(hn::Add(hn::Add(one, y), hn::Add(y2, hn::Mul(y2, y))), hn::Mul(y2, y2)));
+  *a = hn::Mul(f, complement);
+  *b = hn::Mul(f, fc);
+}
+
+// The partial sums: panel p goes into sum p mod 8 at every vector width.
+constexpr size_t kPartialSums = 8;
+
+void SumGgxSplitSumImpl(const GgxSplitSumConstants &k, bool tail, int ruleNodes,
+                        const double *ruleX, const double *ruleW, const Panels &panels,
+                        double sums[2]) {
+  const hn::CappedTag<double, kPartialSums> d;
+  using V = hn::Vec<decltype(d)>;
+  const size_t lanes = hn::Lanes(d), parts = kPartialSums / lanes;
+  // The partial sums live in memory (arrays of vectors are not portable).
+  double partA[kPartialSums] = {}, partB[kPartialSums] = {};
+  // Eight panels at a time, one per lane; their nodes one after the other.
+  const auto block = [&](const double *from, const double *width, const double *sc,
+                         const double *scale) {
+    for (size_t p = 0; p < parts; ++p) {
+      const size_t o = p * lanes;
+      const V vfrom = hn::LoadU(d, from + o), vwidth = hn::LoadU(d, width + o);
+      const V vsc = hn::LoadU(d, sc + o), vscale = hn::LoadU(d, scale + o);
+      V sumA = hn::LoadU(d, partA + o), sumB = hn::LoadU(d, partB + o);
+      for (int i = 0; i < ruleNodes; ++i) {
+        V a, b;
+        const V x = hn::Add(vfrom, hn::Mul(vwidth, hn::Set(d, ruleX[i])));
+        GgxSplitSumLanes(d, k, tail, x, vsc, hn::Mul(vscale, hn::Set(d, ruleW[i])), &a, &b);
+        sumA = hn::Add(sumA, a);
+        sumB = hn::Add(sumB, b);
+      }
+      hn::StoreU(sumA, d, partA + o);
+      hn::StoreU(sumB, d, partB + o);
+    }
+  };
+  size_t p = 0;
+  for (; p + kPartialSums <= panels.n; p += kPartialSums)
+    block(panels.from + p, panels.width + p, panels.sc + p, panels.scale + p);
+  if (p < panels.n) {
+    // The last panels padded with weight 0 on [1, 2]: adding 0 leaves every
+    // partial sum as it was.
+    double from[kPartialSums], width[kPartialSums], sc[kPartialSums], scale[kPartialSums];
+    for (size_t j = 0; j < kPartialSums; ++j) {
+      const bool real = p + j < panels.n;
+      from[j] = real ? panels.from[p + j] : 1.0;
+      width[j] = real ? panels.width[p + j] : 1.0;
+      sc[j] = real ? panels.sc[p + j] : 0.0;
+      scale[j] = real ? panels.scale[p + j] : 0.0;
+    }
+    block(from, width, sc, scale);
+  }
+  sums[0] = ((partA[0] + partA[1]) + (partA[2] + partA[3])) +
+            ((partA[4] + partA[5]) + (partA[6] + partA[7]));
+  sums[1] = ((partB[0] + partB[1]) + (partB[2] + partB[3])) +
+            ((partB[4] + partB[5]) + (partB[6] + partB[7]));
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace lutbake::kernel
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace lutbake::kernel {
+
+HWY_EXPORT(SumGgxSplitSumImpl);
+
+void SumGgxSplitSum(const GgxSplitSumConstants &constants, bool tail, int ruleNodes,
+                    const double *ruleX, const double *ruleW, const Panels &panels,
+                    double sums[2]) {
+  HWY_DYNAMIC_DISPATCH(SumGgxSplitSumImpl)(constants, tail, ruleNodes, ruleX, ruleW, panels, sums);
+}
+
+}  // namespace lutbake::kernel
+#endif

@@ -1,0 +1,52 @@
+// The innermost loop of the panel quadrature (albedo_quadrature.cpp): the
+// split-sum integrand of GGX at a batch of half-vector nodes, summed,
+// vectorised with Highway and dispatched at run time to the widest
+// instruction set the processor has (AVX-512, AVX2, SSE4, ... or scalar).
+//
+// The result does not depend on the instruction set: additions,
+// multiplications, divisions and square roots are correctly rounded in IEEE
+// double at any vector width, nothing is fused (the library is built with
+// -ffp-contract=off), and the sum is taken in 8 partial sums (node i into
+// sum i mod 8, whatever the width) added in a fixed order at the end. So the
+// tables are bit-identical on every processor, thread count and compiler.
+#pragma once
+
+#include <cstddef>
+
+#include "lutbake/models/smith.h"
+
+namespace lutbake::kernel {
+
+// What the nodes of one texel share.
+struct GgxSplitSumConstants {
+  double alpha = 1.0;
+  double mu_o = 1.0;  // = cos(theta_o)
+  double L_o = 0.0;   // mu_o Lambda(mu_o)
+  SmithForm smith = SmithForm::kCorrelated;
+};
+
+// A batch of panels of one kind (core or tail) and one Gauss rule: panel p
+// covers [from[p], from[p] + width[p]] in the variable x, at the azimuth of
+// sc[p] = s_o cos(phi), with weight scale[p] (outer weight x width). Its node
+// i is x = from + width rule_x[i], with weight scale rule_w[i].
+struct Panels {
+  const double *from, *width, *sc, *scale;
+  size_t n;
+};
+
+// At x, the half vector is at tan(theta) = T, T = alpha x (core panels) or
+// alpha / x (tail = true). With dxi = 2 x / (1 + x^2)^2 dx (the GGX measure
+// D cos(theta) d(omega) in either variable), the integrand of E in the
+// measure dx is
+//   f(x) = 2 x / (1 + x^2)^2  (o.h / cos(theta))  G2 / mu_o,
+//   o.h / cos(theta) = sc T + mu_o,  o.h = (sc T + mu_o) / sqrt(1 + T^2),
+//   mu_i = (2 T sc + mu_o (1 - T^2)) / (1 + T^2),
+// and zero where mu_i <= 0 (the light below the horizon). Returns the sums
+// over every node of every panel
+//   sums[0] = sum weight f(x) (1 - (1 - o.h)^5)   (A),
+//   sums[1] = sum weight f(x) (1 - o.h)^5         (B).
+// The nodes must have x > 0. Panel p goes into partial sum p mod 8.
+void SumGgxSplitSum(const GgxSplitSumConstants &constants, bool tail, int ruleNodes,
+                    const double *ruleX, const double *ruleW, const Panels &panels, double sums[2]);
+
+}  // namespace lutbake::kernel

@@ -1,0 +1,432 @@
+#include "lutbake/integrators/albedo_quadrature.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "integrators/albedo_kernel.h"
+#include "lutbake/core/math.h"
+#include "lutbake/integrators/gauss_legendre.h"
+
+namespace lutbake {
+
+namespace {
+
+struct Level {
+  int outer, inner;  // Gauss nodes per outer (phi or mu) and inner panel
+};
+constexpr Level kLevels[kQuadratureLevels] = {{6, 5}, {9, 8}, {13, 12}, {18, 17}, {24, 23}};
+
+// Width of the outer panels in u (phi = pi/2 -+ a sinh(u)): the singularities
+// at Im(u) = +-pi/2 then sit at rho = pi/1.2 + sqrt((pi/1.2)^2 + 1) = 5.4
+// from a panel's middle.
+constexpr double kOuterPanelWidth = 1.2;
+// At grazing view the outer scale a = asinh(mu_o / s_o) goes to 0; at
+// mu_o = 0 itself the azimuths with cos(phi) < 0 see no light and the rest
+// is smooth, so phi in [0, pi/2] is graded with this scale instead.
+constexpr double kGrazingLimitScale = 0.25;
+// a is capped here (mu_o within 4e-9 of 1, where the integrand hardly
+// depends on phi and a = infinity at mu_o = 1).
+constexpr double kMaxOuterScale = 10.0;
+// Inner panels: graded by this ratio from the horizon, and no longer than
+// these (in t or w; Beckmann's t), so that the factors with poles at
+// x = +-i (the measure 2x / (1 + x^2)^2) stay far from every panel.
+constexpr double kGradingRatio = 2.0;
+constexpr double kMaxGgxPanel = 0.5;
+constexpr double kMaxBeckmannPanel = 1.0;
+// Beckmann's measure 2 t exp(-t^2) dt beyond t = 6.5 has mass below 1e-18:
+// the inner range is cut there.
+constexpr double kBeckmannCut = 6.5;
+// A graded panel at the horizon whose share of E is provably below this
+// fraction of the tolerance need not resolve the boundary layer: grading
+// starts no finer than that (see FirstPanel).
+constexpr double kNegligibleShare = 1e-3;
+// At most this many panels per geometric grading (2^60 ~ 1e18 in scale).
+constexpr int kMaxGradedPanels = 60;
+// The first panel of E_avg's mu rule is at most this long: the logarithmic
+// singularity of E at mu = 0 (c mu log(mu), times the weight 2 mu) is then
+// integrated by the Gauss rule of that panel alone to ~1e-13 (measured
+// against tests/data at level 1: 9.7e-13 for GGX, where 0.1 gave 7.6e-10).
+constexpr double kFirstAveragePanel = 0.01;
+// Beckmann's Lambda has an essential singularity where the light reaches the
+// normal (mu_i = 1, a = mu / (alpha sqrt(1 - mu^2)) infinite): inside the
+// domain, at phi = 0. The rule converges there more slowly than
+// geometrically, so Beckmann starts from a finer pair of levels.
+constexpr int kBeckmannFirstLevel = 1;
+
+// What every evaluation of one texel shares.
+struct Setup {
+  Ndf ndf;
+  SmithForm smith;
+  double mu_o, s_o, L_o;
+  double d_mu;            // distance of G2/mu_o's nearest singularity from mu_i = 0
+  double a;               // outer scale
+  double negligibleMass;  // kNegligibleShare x tolerance
+};
+
+Setup MakeSetup(const Ndf &ndf, SmithForm smith, double mu_o, double tolerance) {
+  Setup s{ndf,
+          smith,
+          mu_o,
+          SafeSqrt((1.0 - mu_o) * (1.0 + mu_o)),
+          ndf.MuLambda(mu_o),
+          0,
+          0,
+          kNegligibleShare * tolerance};
+  const double L_0 = ndf.MuLambda(0.0);  // alpha / 2 (GGX), alpha / (2 sqrt(pi)) (Beckmann)
+  s.d_mu = smith == SmithForm::kCorrelated ? std::min(mu_o * L_0 / (mu_o + s.L_o), ndf.alpha)
+                                           : std::min(L_0, ndf.alpha);
+  s.a = s.s_o > 0.0 ? std::min(std::asinh(mu_o / s.s_o), kMaxOuterScale) : kMaxOuterScale;
+  return s;
+}
+
+// The first graded panel at the horizon end: the singularity's distance in
+// the variable, but no finer than the panel whose contribution is provably
+// at most negligibleMass (`lengthForMass`, from the closed-form bound of the
+// mass of the first l of the range). Such a panel may be left unresolved: its
+// Gauss sum and its integral both lie in [0, 2 negligibleMass], and the
+// bound adds that (IntegrateSplitSumQuadrature).
+double FirstPanel(double distance, double lengthForMass) {
+  if (!(distance > 0.0)) distance = 0.0;
+  return std::max(distance, lengthForMass);
+}
+
+// Panels of one level, of one kind (core or tail): their range in x (t or w),
+// sc = s_o cos(phi) of their azimuth, and scale = outer weight x width.
+// Grown as needed, never shrunk: one set per thread.
+struct PanelList {
+  std::vector<double> from, width, sc, scale;
+  size_t n = 0;
+  void Clear() { n = 0; }
+  void Push(double lo, double hi, double sci, double outerWeight) {
+    if (n == from.size()) {
+      const size_t size = 2 * n + 64;
+      from.resize(size);
+      width.resize(size);
+      sc.resize(size);
+      scale.resize(size);
+    }
+    from[n] = lo;
+    width[n] = hi - lo;
+    sc[n] = sci;
+    scale[n] = outerWeight * (hi - lo);
+    ++n;
+  }
+  kernel::Panels View() const { return {from.data(), width.data(), sc.data(), scale.data(), n}; }
+};
+
+// The outer nodes of one level at one outer scale a: cos(phi) and the weight
+// dphi / pi. They depend on mu_o only, so a thread that works down a column
+// of a table computes them once.
+struct OuterNodes {
+  double a = -1.0;
+  std::vector<double> cosPhi, weight;
+};
+
+struct Scratch {
+  PanelList core, tail;
+  PanelList graded;  // Beckmann's horizon grading before its panels are cut
+  OuterNodes outer[kQuadratureLevels];
+};
+
+Scratch &ThreadScratch() {
+  thread_local Scratch scratch;
+  return scratch;
+}
+
+const OuterNodes &Outer(double a, bool grazing, int level, Scratch *s) {
+  OuterNodes &o = s->outer[level];
+  const double key = grazing ? -2.0 : a;  // grazing: phi in [0, pi/2] only
+  if (o.a == key) return o;
+  o.a = key;
+  o.cosPhi.clear();
+  o.weight.clear();
+  const GaussLegendreRule &rule = GaussLegendre(kLevels[level].outer);
+  const double scale = grazing ? kGrazingLimitScale : a;
+  const double U = std::asinh(0.5 * kPi / scale);
+  const int panels = std::max(1, static_cast<int>(std::ceil(U / kOuterPanelWidth)));
+  const double width = U / panels;
+  // side -1: phi < pi/2 (cos(phi) > 0, toward the view); +1: phi > pi/2.
+  for (int side = -1; side <= (grazing ? -1 : 1); side += 2)
+    for (int p = 0; p < panels; ++p)
+      for (int j = 0; j < rule.n; ++j) {
+        const double u = width * (p + rule.x[j]);
+        // cos(phi) = sin(pi/2 - phi) = -side sin(a sinh(u)), accurate near pi/2.
+        const double offset = std::min(scale * std::sinh(u), 0.5 * kPi);
+        o.cosPhi.push_back(-side * std::sin(offset));
+        // dphi / pi = a cosh(u) du / pi.
+        o.weight.push_back(scale * std::cosh(u) * width * rule.w[j] * kInvPi);
+      }
+  return o;
+}
+
+// Pushes the panels of [lo, hi] graded toward hi (towardHi) or lo: lengths
+// first, 2 first, 4 first, ... from that end, the last taking what is left
+// (joined to the one before when under half its length), each then split
+// into equal parts no longer than maxLength. first <= 0: no grading.
+void PushGraded(double lo, double hi, double first, bool towardHi, double maxLength, double sc,
+                double outerWeight, PanelList *list) {
+  const double length = hi - lo;
+  double cut[kMaxGradedPanels + 2];
+  int cuts = 0;
+  cut[cuts++] = 0.0;
+  if (first > 0.0) first = std::max(first, length * 0x1p-60);
+  if (first > 0.0 && first < length) {
+    double size = first;
+    while (cuts < kMaxGradedPanels && cut[cuts - 1] + size < length) {
+      cut[cuts] = cut[cuts - 1] + size;
+      ++cuts;
+      size *= kGradingRatio;
+    }
+    if (cuts > 1 && length - cut[cuts - 1] < 0.5 * (cut[cuts - 1] - cut[cuts - 2])) --cuts;
+  }
+  cut[cuts++] = length;
+  double from = lo;
+  for (int k = 1; k < cuts; ++k) {
+    const double to = k == cuts - 1 ? hi : towardHi ? hi - cut[cuts - 1 - k] : lo + cut[k];
+    const int parts =
+        to - from > maxLength ? static_cast<int>(std::ceil((to - from) / maxLength)) : 1;
+    for (int p = 1; p < parts; ++p) {
+      const double at = from + (to - from) * p / parts;
+      list->Push(from + (to - from) * (p - 1) / parts, at, sc, outerWeight);
+    }
+    list->Push(parts > 1 ? from + (to - from) * (parts - 1) / parts : from, to, sc, outerWeight);
+    from = to;
+  }
+}
+
+// dmu_i / dT at T: (2 sc (1 - T^2) - 4 mu_o T) / (1 + T^2)^2.
+double HorizonSlope(double sc, double mu_o, double T) {
+  const double d = 1.0 + T * T;
+  return (2.0 * sc * (1.0 - T * T) - 4.0 * mu_o * T) / (d * d);
+}
+
+// The inner panels of one azimuth (sc = s_o cos(phi)).
+void InnerPanels(const Setup &t, double sc, double outerWeight, Scratch *s) {
+  const double mu_o = t.mu_o, alpha = t.ndf.alpha;
+  // T_max, the positive root of mu_o T^2 - 2 sc T - mu_o, in the form that
+  // does not cancel: (sc + R) / mu_o for sc >= 0, mu_o / (R - sc) otherwise.
+  const double R = std::sqrt(sc * sc + mu_o * mu_o);
+  const double T_max =
+      sc >= 0.0 ? (mu_o > 0.0 ? (sc + R) / mu_o : std::numeric_limits<double>::infinity())
+                : mu_o / (R - sc);
+  if (!(T_max > 0.0)) return;  // no light above the horizon
+  const bool bounded = std::isfinite(T_max);
+  // A bound of the E integrand near the horizon in the measure dxi:
+  // (o.h / cos(theta)) G2 / mu_o <= (|sc| T_max + mu_o) / (mu_o + L_o).
+  const double M = (std::abs(sc) * T_max + mu_o) / (mu_o + t.L_o);
+  const double slope = bounded ? std::abs(HorizonSlope(sc, mu_o, T_max)) : 0.0;
+  const double tMax = T_max / alpha;
+  // The whole inner integral is at most M xi(T_max) (the NDF's mass below
+  // the horizon times the bound above; the bound is largest at T_max). An
+  // azimuth where that is below the negligible mass is left out: the outer
+  // weights sum to 1, so all of them together leave out at most that much.
+  // (Far past pi/2 at grazing view, where the horizon cuts the NDF to a
+  // sliver.)
+  const double xiMax =
+      t.ndf.kind == NdfKind::kGgx ? tMax * tMax / (1.0 + tMax * tMax) : -std::expm1(-tMax * tMax);
+  if (bounded && M * xiMax <= t.negligibleMass) return;
+  if (t.ndf.kind == NdfKind::kGgx) {
+    if (tMax <= 1.0) {
+      // The horizon cuts the core: grade toward t_max. The mass of
+      // [t_max - l, t_max] is at most 2 t_max l M (dxi <= 2 t dt).
+      const double first =
+          FirstPanel(t.d_mu / (alpha * slope), t.negligibleMass / (2.0 * tMax * M));
+      PushGraded(0.0, tMax, first, true, kMaxGgxPanel, sc, outerWeight, &s->core);
+      return;
+    }
+    s->core.Push(0.0, 0.5, sc, outerWeight);
+    s->core.Push(0.5, 1.0, sc, outerWeight);
+    // The tail, w = alpha / T from w_min = alpha / T_max. Two singularities
+    // set the grading: G2's, at distance d_mu / (dmu_i/dw) beyond w_min
+    // (dmu_i/dw = dmu_i/dT T^2 / alpha), and 1 + T^2 = 0 at w = +-i alpha,
+    // where o.h and mu_i turn over from the NDF's core to its horizon: at a
+    // distance hypot(w_min, alpha). The mass of [w_min, w_min + l] is at most
+    // M ((w_min + l)^2 - w_min^2) (dxi <= 2 w dw), which is m at
+    // l = (m / M) / (w_min + sqrt(w_min^2 + m / M)).
+    double first;
+    if (bounded) {
+      const double wMin = alpha / T_max, share = t.negligibleMass / M;
+      first =
+          FirstPanel(std::min(t.d_mu * alpha / (slope * T_max * T_max), std::hypot(wMin, alpha)),
+                     share / (wMin + std::sqrt(wMin * wMin + share)));
+      PushGraded(wMin, 1.0, first, false, kMaxGgxPanel, sc, outerWeight, &s->tail);
+      return;
+    }
+    // mu_o = 0: the tail reaches w = 0, where mu_i = 2 sc w / (w^2 + alpha^2)
+    // has slope 2 sc / alpha; no mass bound (M is infinite), so grade fully.
+    first = t.d_mu > 0.0 ? std::min(alpha, t.d_mu * alpha / (2.0 * sc)) : alpha;
+    PushGraded(0.0, 1.0, first, false, kMaxGgxPanel, sc, outerWeight, &s->tail);
+    return;
+  }
+  // Beckmann: t = T / alpha up to min(t_max, the cut), in panels no longer
+  // than BeckmannPanel allows where they start (graded toward t_max as GGX's
+  // tail is). The factor 1 + T^2 vanishes at t = +-i / alpha, and
+  // exp(-t^2) grows as exp(y^2) off the real axis: panels of 0.4 / alpha (at
+  // most 1) keep rho near 5 where the mass is, longer ones past t = 3 and
+  // 4.5, where exp(-t^2) has left less than 1e-4 and 2e-9 of it.
+  const double end = std::min(tMax, kBeckmannCut);
+  const double first = tMax < kBeckmannCut ? FirstPanel(t.d_mu / (alpha * slope),
+                                                        t.negligibleMass / (2.0 * tMax * M))
+                                           : 0.0;
+  PanelList &graded = s->graded;
+  graded.Clear();
+  PushGraded(0.0, end, first, true, kBeckmannCut, sc, outerWeight, &graded);
+  const double step = std::min(kMaxBeckmannPanel, 0.4 / alpha);
+  for (size_t p = 0; p < graded.n; ++p) {
+    const double from = graded.from[p], to = from + graded.width[p];
+    const double local = step * (from < 3.0 ? 1.0 : from < 4.5 ? 2.0 : 4.0);
+    const int parts = std::max(1, static_cast<int>(std::ceil((to - from) / local)));
+    for (int k = 0; k < parts; ++k)
+      s->core.Push(from + (to - from) * k / parts,
+                   k + 1 == parts ? to : from + (to - from) * (k + 1) / parts, sc, outerWeight);
+  }
+}
+
+// Beckmann's integrand one node at a time (erfc in Lambda has no vector
+// form here): the measure 2 t exp(-t^2) dt, T = alpha t.
+void SumBeckmann(const Setup &t, const GaussLegendreRule &rule, const PanelList &panels,
+                 double sums[2]) {
+  double A = 0.0, B = 0.0;
+  for (size_t p = 0; p < panels.n; ++p)
+    for (int i = 0; i < rule.n; ++i) {
+      const double x = panels.from[p] + panels.width[p] * rule.x[i], sc = panels.sc[p];
+      const double T = t.ndf.alpha * x;
+      const double q = sc * T + t.mu_o;
+      const double inv = 1.0 / (1.0 + T * T);
+      const double mu_i = (2.0 * T * sc + t.mu_o * (1.0 - T * T)) * inv;
+      if (!(mu_i > 0.0 && q > 0.0)) continue;
+      const double f = panels.scale[p] * rule.w[i] * 2.0 * x * std::exp(-x * x) * q *
+                       SmithG2OverMuO(t.smith, t.mu_o, mu_i, t.L_o, t.ndf.MuLambda(mu_i));
+      const SchlickWeights fc = Schlick(q * std::sqrt(inv));
+      A += f * fc.complement;
+      B += f * fc.fc;
+    }
+  sums[0] = A;
+  sums[1] = B;
+}
+
+struct Sums {
+  double A = 0, B = 0;
+  uint64_t evaluations = 0;
+};
+
+// The integrals at one level.
+Sums EvaluateLevel(const Setup &t, int level) {
+  Scratch &s = ThreadScratch();
+  s.core.Clear();
+  s.tail.Clear();
+  const OuterNodes &outer = Outer(t.a, t.mu_o == 0.0, level, &s);
+  for (size_t j = 0; j < outer.cosPhi.size(); ++j)
+    InnerPanels(t, t.s_o * outer.cosPhi[j], outer.weight[j], &s);
+  const GaussLegendreRule &inner = GaussLegendre(kLevels[level].inner);
+  double core[2] = {0.0, 0.0}, tail[2] = {0.0, 0.0};
+  if (t.ndf.kind == NdfKind::kGgx) {
+    const kernel::GgxSplitSumConstants constants{t.ndf.alpha, t.mu_o, t.L_o, t.smith};
+    kernel::SumGgxSplitSum(constants, false, inner.n, inner.x, inner.w, s.core.View(), core);
+    kernel::SumGgxSplitSum(constants, true, inner.n, inner.x, inner.w, s.tail.View(), tail);
+  } else {
+    SumBeckmann(t, inner, s.core, core);
+  }
+  Sums sums;
+  sums.A = core[0] + tail[0];
+  sums.B = core[1] + tail[1];
+  sums.evaluations = (s.core.n + s.tail.n) * static_cast<uint64_t>(inner.n);
+  return sums;
+}
+
+int FirstLevel(const Ndf &ndf) { return ndf.kind == NdfKind::kBeckmann ? kBeckmannFirstLevel : 0; }
+
+}  // namespace
+
+SplitSumQuadrature IntegrateSplitSumQuadrature(const Ndf &ndf, SmithForm smith, double mu_o,
+                                               double tolerance, bool split) {
+  const Setup setup = MakeSetup(ndf, smith, mu_o, tolerance);
+  SplitSumQuadrature result;
+  const int first = FirstLevel(ndf);
+  Sums previous = EvaluateLevel(setup, first);
+  result.evaluations = previous.evaluations;
+  for (int k = first + 1; k < kQuadratureLevels; ++k) {
+    const Sums current = EvaluateLevel(setup, k);
+    result.evaluations += current.evaluations;
+    result.A = current.A;
+    result.B = current.B;
+    // The floor, and what the negligible parts may hold: the first horizon
+    // panels (their sums and integrals both in [0, 2 m]) and the azimuths
+    // left out (at most m).
+    const double floor = kQuadratureBoundFloor + 3.0 * setup.negligibleMass;
+    result.boundA = std::abs(current.A - previous.A) + floor;
+    result.boundB = std::abs(current.B - previous.B) + floor;
+    result.boundE = std::abs((current.A + current.B) - (previous.A + previous.B)) + floor;
+    result.level = k;
+    result.converged =
+        split ? std::max(result.boundA, result.boundB) <= tolerance : result.boundE <= tolerance;
+    if (result.converged) break;
+    previous = current;
+  }
+  // The sums of ~3000 positive terms carry a rounding of ~1e-14: where a
+  // mirror-like lobe makes E = 1 - O(alpha^2), A + B may come out a few ulps
+  // above 1. The truth lies in {A, B >= 0, A + B <= 1}; bringing the values
+  // back into it (A, B scaled by 1 / (A + B)) moves them by at most that
+  // excess, far inside the 1e-10 floor of the bounds.
+  result.A = std::max(result.A, 0.0);
+  result.B = std::max(result.B, 0.0);
+  if (const double E = result.A + result.B; E > 1.0) {
+    result.A /= E;
+    result.B /= E;
+  }
+  return result;
+}
+
+namespace {
+
+// E_avg's value at one level: Gauss panels in mu graded from 0.
+Sums AverageAtLevel(const Ndf &ndf, SmithForm smith, double tolerance, int k,
+                    const PanelList &panels) {
+  const GaussLegendreRule &rule = GaussLegendre(kLevels[k].outer);
+  Sums sums;
+  for (size_t p = 0; p < panels.n; ++p)
+    for (int i = 0; i < rule.n; ++i) {
+      const double mu = panels.from[p] + panels.width[p] * rule.x[i];
+      // E at mu enters with the weight 2 mu (the rule's weights sum to 1):
+      // its negligible parts may be 1 / (2 mu) times larger, and add up to
+      // at most 3 kNegligibleShare tolerance over the whole rule.
+      const Sums e = EvaluateLevel(MakeSetup(ndf, smith, mu, tolerance / (2.0 * mu)), k);
+      sums.A += panels.width[p] * rule.w[i] * 2.0 * mu * (e.A + e.B);
+      sums.evaluations += e.evaluations;
+    }
+  return sums;
+}
+
+}  // namespace
+
+AverageQuadrature IntegrateAverageQuadrature(const Ndf &ndf, SmithForm smith, double tolerance) {
+  // E(mu) varies at grazing over a width alpha (mu Lambda(mu) has branch
+  // points at mu = +-i alpha / sqrt(1 - alpha^2)), and correlated E(mu) =
+  // 1 + c mu log(mu) + ... (c ~ 0.7 at alpha = 0.7): the panels are graded
+  // toward 0 from min(alpha, kFirstAveragePanel).
+  PanelList panels;
+  PushGraded(0.0, 1.0, std::min(ndf.alpha, kFirstAveragePanel), false, 0.5, 0.0, 1.0, &panels);
+  AverageQuadrature result;
+  const int first = FirstLevel(ndf);
+  Sums previous = AverageAtLevel(ndf, smith, tolerance, first, panels);
+  result.evaluations = previous.evaluations;
+  for (int k = first + 1; k < kQuadratureLevels; ++k) {
+    const Sums current = AverageAtLevel(ndf, smith, tolerance, k, panels);
+    result.evaluations += current.evaluations;
+    result.value = current.A;
+    // The floor, the first mu panel (at most m) and the negligible parts of
+    // every E (3 m in all, see AverageAtLevel), m = kNegligibleShare tolerance.
+    result.bound = std::abs(current.A - previous.A) + kQuadratureBoundFloor +
+                   4.0 * kNegligibleShare * tolerance;
+    result.level = k;
+    result.converged = result.bound <= tolerance;
+    if (result.converged) break;
+    previous = current;
+  }
+  result.value = std::clamp(result.value, 0.0, 1.0);  // as for E above
+  return result;
+}
+
+}  // namespace lutbake

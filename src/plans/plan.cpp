@@ -1,0 +1,344 @@
+#include "lutbake/plans/plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "lutbake/integrators/fresnel_average.h"
+
+namespace lutbake {
+
+namespace {
+
+// The uses of one parameter, gathered from several materials.
+struct Uses {
+  std::set<double> exact;
+  std::vector<std::pair<double, double>> ranges;
+  std::vector<std::string> materials;
+
+  void AddMaterial(const std::string &name) {
+    if (std::find(materials.begin(), materials.end(), name) == materials.end())
+      materials.push_back(name);
+  }
+  void Add(double lo, double hi) {
+    if (lo == hi)
+      exact.insert(lo);
+    else
+      ranges.emplace_back(lo, hi);
+  }
+  void Add(const ParameterUse &p) {
+    if (p.range())
+      Add(p.min, p.max);
+    else
+      for (double v : p.values) exact.insert(v);
+  }
+
+  // What a table must cover, and the axis that covers it: listed when every
+  // use is exact and there are few, else linear over the hull with
+  // `fullCount * width / fullWidth` texels (at least 2).
+  CoveredRange Cover(int maxListed) const {
+    CoveredRange c;
+    c.min = HUGE_VAL;
+    c.max = -HUGE_VAL;
+    for (double v : exact) c.min = std::min(c.min, v), c.max = std::max(c.max, v);
+    for (const auto &[lo, hi] : ranges) c.min = std::min(c.min, lo), c.max = std::max(c.max, hi);
+    if (ranges.empty() && static_cast<int>(exact.size()) <= maxListed)
+      c.values.assign(exact.begin(), exact.end());
+    return c;
+  }
+};
+
+Axis AxisOver(const std::string &name, const CoveredRange &c, int fullCount, double fullWidth) {
+  if (!c.values.empty()) return ListedAxis(name, c.values);
+  const double share = (c.max - c.min) / fullWidth;
+  const int count =
+      std::max(2, static_cast<int>(std::ceil(static_cast<double>(fullCount) * share - 1e-9)));
+  return LinearAxis(name, c.min, c.max, count);
+}
+
+std::string Suffix(NdfKind ndf, SmithForm smith) {
+  return std::string(ndf == NdfKind::kBeckmann ? "_beckmann" : "") +
+         (smith == SmithForm::kSeparable ? "_separable" : "");
+}
+
+// An axis for people: 6 significant digits (the metadata keeps all 17).
+std::string ShortAxis(const Axis &axis) {
+  const auto num = [](double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.6g", v);
+    return std::string(buffer);
+  };
+  std::string text = axis.name + (axis.listed() ? " at " : " linear [");
+  if (axis.listed())
+    for (size_t i = 0; i < axis.nodes.size(); ++i) text += (i ? ", " : "") + num(axis.nodes[i]);
+  else
+    text += num(axis.min) + ", " + num(axis.max) + "]";
+  return text + " (" + std::to_string(axis.count) + (axis.count == 1 ? " texel)" : " texels)");
+}
+
+std::string JoinNames(const std::vector<std::string> &names) {
+  std::string out;
+  for (const std::string &n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+}  // namespace
+
+BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions &options) {
+  BakePlan plan;
+  plan.materials = materials;
+
+  // (ndf, smith) -> uses of roughness by compensated / IBL materials.
+  using Model = std::pair<NdfKind, SmithForm>;
+  std::map<Model, Uses> compensated, ibl;
+  std::map<FresnelModel, std::pair<Uses, Uses>> fresnel;  // eta, k
+  int lit = 0, litSchlickCompensated = 0;
+  for (const MaterialSpec &m : materials) {
+    if (m.unlit) continue;
+    for (const std::string &f : m.unsupported) plan.unsupported.push_back({m.name, f});
+    if (m.roughness.empty()) continue;  // no specular lobe
+    ++lit;
+    const bool usesIbl = options.ibl && m.ibl.value_or(options.defaultIbl.value_or(true));
+    const bool usesCompensation =
+        options.compensation && m.compensation.value_or(options.defaultCompensation.value_or(true));
+    const Model model{m.ndf, m.smith};
+    for (const RoughnessUse &r : m.roughness) {
+      if (usesIbl) ibl[model].Add(r.min, r.max), ibl[model].AddMaterial(m.name);
+      if (usesCompensation)
+        compensated[model].Add(r.min, r.max), compensated[model].AddMaterial(m.name);
+    }
+    if (usesCompensation) {
+      if (m.fresnel.model == FresnelModel::kSchlick) {
+        ++litSchlickCompensated;
+      } else {
+        auto &[eta, k] = fresnel[m.fresnel.model];
+        eta.Add(m.fresnel.eta);
+        eta.AddMaterial(m.name);
+        if (m.fresnel.model == FresnelModel::kConductor) k.Add(m.fresnel.k);
+      }
+    }
+  }
+
+  // Plain names unless the plan needs two variants of a table.
+  std::set<Model> models;
+  for (const auto &[model, uses] : compensated) models.insert(model);
+  for (const auto &[model, uses] : ibl) models.insert(model);
+  const bool variants = models.size() > 1;
+  const auto albedoTable = [&](TableKind kind, const Model &model, const Uses &uses) {
+    PlannedTable t;
+    t.kind = kind;
+    t.name = std::string(TableName(kind)) + (variants ? Suffix(model.first, model.second) : "");
+    t.ndf = model.first;
+    t.smith = model.second;
+    t.roughness = uses.Cover(options.maxListedRoughness);
+    t.materials = uses.materials;
+    const int full = kind == TableKind::kE     ? options.sizeE
+                     : kind == TableKind::kDfg ? options.sizeDfg
+                                               : options.sizeEavg;
+    const Axis r = AxisOver("perceptualRoughness", t.roughness, full, 1.0);
+    if (kind == TableKind::kEavg) {
+      t.x = r;
+      t.y = LinearAxis("", 0.0, 1.0, 1);
+    } else {
+      t.x = MuAxis(full);
+      t.y = r;
+    }
+    plan.tables.push_back(t);
+  };
+  for (const auto &[model, uses] : compensated) {
+    albedoTable(TableKind::kE, model, uses);
+    albedoTable(TableKind::kEavg, model, uses);
+  }
+  for (const auto &[model, uses] : fresnel) {
+    PlannedTable t;
+    t.kind = TableKind::kFavg;
+    t.fresnel = model;
+    t.name = fresnel.size() > 1 ? "Favg_" + std::string(ToString(model)) : "Favg";
+    const Uses &eta = uses.first, &k = uses.second;
+    t.eta = eta.Cover(options.maxListedRoughness);
+    t.materials = eta.materials;
+    // Linear ranges get the full table's texel count: the F_avg axes have no
+    // fixed full width to share (section 1 of the SPEC leaves them open).
+    t.x = AxisOver("eta", t.eta, options.sizeFavg, t.eta.max - t.eta.min);
+    t.y = LinearAxis("", 0.0, 1.0, 1);
+    if (model == FresnelModel::kConductor) {
+      t.k = k.Cover(options.maxListedRoughness);
+      t.y = AxisOver("k", t.k, options.sizeFavg, t.k.max - t.k.min);
+    }
+    plan.tables.push_back(t);
+  }
+  for (const auto &[model, uses] : ibl) albedoTable(TableKind::kDfg, model, uses);
+
+  // Why each table that is not planned is left out.
+  const auto has = [&](TableKind kind) {
+    for (const PlannedTable &t : plan.tables)
+      if (t.kind == kind) return true;
+    return false;
+  };
+  std::string nothingLit;
+  if (materials.empty())
+    nothingLit = "the scenes and manifests hold no materials";
+  else if (lit == 0)
+    nothingLit = "no material needs it: each of the " + std::to_string(materials.size()) +
+                 " is unlit or has no specular lobe";
+  // A term is off because of the command line, the manifest's lighting, or
+  // every lit material's own setting.
+  const auto offReason = [&](bool commandLine, const std::optional<bool> &manifest,
+                             const char *flag, const char *what) {
+    if (!nothingLit.empty()) return nothingLit;
+    if (!commandLine) return std::string(what) + " is off (" + flag + ")";
+    if (manifest.has_value() && !*manifest)
+      return std::string(what) + " is off (the manifest's \"lighting\" sets it false)";
+    return std::string(what) + " is off for every lit material (each sets it false)";
+  };
+  if (!has(TableKind::kE)) {
+    const std::string reason = offReason(options.compensation, options.defaultCompensation,
+                                         "--no-compensation", "energy compensation");
+    plan.omitted.push_back({"E", reason});
+    plan.omitted.push_back({"Eavg", reason});
+  }
+  if (!has(TableKind::kFavg)) {
+    if (!has(TableKind::kE)) {
+      plan.omitted.push_back({"Favg",
+                              "F_avg serves energy compensation only, and no material "
+                              "uses it"});
+    } else {
+      plan.schlickFavgFunction = litSchlickCompensated > 0;
+      plan.omitted.push_back(
+          {"Favg",
+           "every compensated material uses Schlick's Fresnel, whose F_avg = 20/21 F0 + 1/21 F90 "
+           "exactly: the Favg.h header carries that function instead of a table"});
+    }
+  }
+  if (!has(TableKind::kDfg))
+    plan.omitted.push_back(
+        {"dfg", offReason(options.ibl, options.defaultIbl, "--no-ibl", "image-based lighting")});
+  return plan;
+}
+
+BakeSettings PlannedSettings(const PlannedTable &table, const BakeSettings &base) {
+  BakeSettings s = base;
+  s.ndf = table.ndf;
+  s.smith = table.smith;
+  s.fresnel = table.fresnel;
+  return s;
+}
+
+namespace {
+
+nlohmann::ordered_json CoveredJson(const CoveredRange &c) {
+  nlohmann::ordered_json j;
+  j["min"] = c.min;
+  j["max"] = c.max;
+  if (!c.values.empty()) j["values"] = c.values;
+  return j;
+}
+
+}  // namespace
+
+std::string PlanJson(const BakePlan &plan) {
+  using Json = nlohmann::ordered_json;
+  Json out;
+  out["tables"] = Json::array();
+  for (const PlannedTable &t : plan.tables) {
+    Json j;
+    j["name"] = t.name;
+    j["table"] = TableName(t.kind);
+    if (t.kind == TableKind::kFavg) {
+      j["fresnel"] = ToString(t.fresnel);
+      j["eta"] = CoveredJson(t.eta);
+      if (t.fresnel == FresnelModel::kConductor) j["k"] = CoveredJson(t.k);
+    } else {
+      j["ndf"] = ToString(t.ndf);
+      j["smith"] = ToString(t.smith);
+      j["roughness"] = CoveredJson(t.roughness);
+    }
+    j["axisX"] = DescribeAxis(t.x);
+    j["axisY"] = t.y.name.empty() ? "none (1D table)" : DescribeAxis(t.y);
+    j["size"] = {t.x.count, t.y.count};
+    j["materials"] = t.materials;
+    out["tables"].push_back(j);
+  }
+  out["omitted"] = Json::array();
+  for (const OmittedTable &o : plan.omitted)
+    out["omitted"].push_back({{"name", o.name}, {"reason", o.reason}});
+  out["unsupported"] = Json::array();
+  for (const UnsupportedFeature &u : plan.unsupported)
+    out["unsupported"].push_back({{"material", u.material}, {"feature", u.feature}});
+  out["materials"] = Json::array();
+  for (const MaterialSpec &m : plan.materials) {
+    Json j;
+    j["name"] = m.name;
+    j["source"] = m.source;
+    j["where"] = m.where;
+    j["unlit"] = m.unlit;
+    j["ndf"] = ToString(m.ndf);
+    j["smith"] = ToString(m.smith);
+    j["fresnel"] = ToString(m.fresnel.model);
+    if (!m.fresnel.schlickF0.empty()) {
+      // Schlick's F_avg = 20/21 F0 + 1/21 F90, per channel: a constant, no table.
+      Json favg = Json::array();
+      for (double f0 : m.fresnel.schlickF0)
+        favg.push_back(f0 * (20.0 / 21.0) + m.fresnel.schlickF90 / 21.0);
+      j["F0"] = m.fresnel.schlickF0;
+      j["F90"] = m.fresnel.schlickF90;
+      j["Favg"] = favg;
+    } else if (m.fresnel.model != FresnelModel::kSchlick && !m.fresnel.eta.range() &&
+               m.fresnel.eta.values.size() == 1 &&
+               (m.fresnel.model == FresnelModel::kDielectric ||
+                (!m.fresnel.k.range() && m.fresnel.k.values.size() == 1))) {
+      const double k = m.fresnel.model == FresnelModel::kConductor ? m.fresnel.k.values[0] : 0.0;
+      j["eta"] = m.fresnel.eta.values[0];
+      if (m.fresnel.model == FresnelModel::kConductor) j["k"] = k;
+      j["Favg"] = EvaluateFresnelAverage(m.fresnel.model, m.fresnel.eta.values[0], k).value[0];
+    }
+    j["roughness"] = Json::array();
+    for (const RoughnessUse &r : m.roughness)
+      j["roughness"].push_back({{"layer", r.layer}, {"min", r.min}, {"max", r.max}});
+    j["unsupported"] = m.unsupported;
+    j["notes"] = m.notes;
+    out["materials"].push_back(j);
+  }
+  return out.dump(2);
+}
+
+std::string DescribePlan(const BakePlan &plan) {
+  std::ostringstream s;
+  size_t unlit = 0;
+  for (const MaterialSpec &m : plan.materials) unlit += m.unlit ? 1 : 0;
+  s << plan.materials.size() << " material" << (plan.materials.size() == 1 ? "" : "s");
+  if (unlit) s << " (" << unlit << " unlit)";
+  s << "; " << plan.tables.size() << " table" << (plan.tables.size() == 1 ? "" : "s") << " to bake"
+    << (plan.tables.empty() ? ": nothing to bake" : ":") << "\n";
+  for (const PlannedTable &t : plan.tables) {
+    s << "  " << t.name << "  " << t.x.count;
+    if (!t.y.name.empty()) s << " x " << t.y.count;
+    s << "  (";
+    if (t.kind == TableKind::kFavg)
+      s << ToString(t.fresnel);
+    else
+      s << ToString(t.ndf) << ", " << ToString(t.smith);
+    s << ")\n    " << ShortAxis(t.x);
+    if (!t.y.name.empty()) s << "\n    " << ShortAxis(t.y);
+    s << "\n    for " << JoinNames(t.materials) << "\n";
+  }
+  if (!plan.omitted.empty()) s << "left out:\n";
+  for (const OmittedTable &o : plan.omitted) s << "  " << o.name << ": " << o.reason << "\n";
+  if (!plan.unsupported.empty()) s << "unsupported (needs tables lutbake does not bake):\n";
+  for (const UnsupportedFeature &u : plan.unsupported)
+    s << "  " << u.material << ": " << u.feature << "\n";
+  bool notes = false;
+  for (const MaterialSpec &m : plan.materials)
+    for (const std::string &n : m.notes) {
+      if (!notes) s << "notes:\n";
+      notes = true;
+      s << "  " << m.name << ": " << n << "\n";
+    }
+  return s.str();
+}
+
+}  // namespace lutbake

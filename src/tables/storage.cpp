@@ -1,0 +1,83 @@
+#include "lutbake/tables/storage.h"
+
+#include <Imath/half.h>
+
+#include <cmath>
+#include <limits>
+
+namespace lutbake {
+
+const char *ToString(ValueType type) {
+  switch (type) {
+    case ValueType::kFloat32: return "float32";
+    case ValueType::kFloat64: return "float64";
+    case ValueType::kHalf: return "half";
+  }
+  return "?";
+}
+
+double StoredValue(double value, ValueType type) {
+  switch (type) {
+    case ValueType::kFloat32: return static_cast<double>(static_cast<float>(value));
+    case ValueType::kFloat64: return value;
+    case ValueType::kHalf:
+      return static_cast<double>(static_cast<float>(Imath::half(static_cast<float>(value))));
+  }
+  return value;
+}
+
+double RoundUpToFloat(double bound) {
+  float f = static_cast<float>(bound);
+  if (static_cast<double>(f) < bound) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return static_cast<double>(f);
+}
+
+double StoredBound(double value, double bound, ValueType type) {
+  const double total = bound + std::abs(StoredValue(value, type) - value);
+  if (type == ValueType::kFloat64) return total;
+  // The sum is rounded to nearest in double, a relative 1.1e-16: far inside
+  // the slack of any integration bound (the quadrature's has a floor of 1e-10).
+  return RoundUpToFloat(total);
+}
+
+std::vector<double> StoredBounds(const Table &table, ValueType type) {
+  std::vector<double> bounds(table.values.size());
+  for (size_t i = 0; i < bounds.size(); ++i)
+    bounds[i] = StoredBound(table.values[i], i < table.errors.size() ? table.errors[i] : 0.0, type);
+  return bounds;
+}
+
+BoundSummary SummarizeStoredBounds(const Table &table, ValueType type) {
+  BoundSummary s;
+  double sum = 0.0;
+  const std::vector<double> bounds = StoredBounds(table, type);
+  for (double b : bounds) {
+    s.max = std::max(s.max, b);
+    sum += b * b;
+  }
+  if (!bounds.empty()) s.rms = std::sqrt(sum / static_cast<double>(bounds.size()));
+  return s;
+}
+
+std::vector<std::pair<std::string, std::string>> MetadataForStorage(const Table &table,
+                                                                    ValueType type) {
+  const BoundSummary s = SummarizeStoredBounds(table, type);
+  std::vector<std::pair<std::string, std::string>> out;
+  bool placed = false;
+  const auto summary = [&] {
+    out.emplace_back("errorMax", FormatDouble(s.max));
+    out.emplace_back("errorRms", FormatDouble(s.rms));
+    out.emplace_back("errorStorage", ToString(type));
+    placed = true;
+  };
+  for (const auto &entry : table.metadata) {
+    if (entry.first == "errorMax" || entry.first == "errorRms" || entry.first == "errorStorage")
+      continue;
+    out.push_back(entry);
+    if (entry.first == "errorBound") summary();
+  }
+  if (!placed) summary();
+  return out;
+}
+
+}  // namespace lutbake

@@ -1,0 +1,957 @@
+#include "lutbake/validation/check.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <regex>
+#include <set>
+
+#include "lutbake/core/hash.h"
+#include "lutbake/formats/binary_format.h"
+#include "lutbake/formats/table_reader.h"
+#include "lutbake/formats/writer.h"
+#include "lutbake/integrators/fresnel_average.h"
+#include "lutbake/tables/lookup.h"
+
+namespace lutbake {
+
+bool CheckReport::passed() const {
+  for (const CheckResult &r : results)
+    if (r.status == CheckStatus::kFail) return false;
+  return true;
+}
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Half an ulp of float32 at v: what storing a double as float may change.
+double FloatRounding(double v) { return std::abs(v) * 0x1p-24; }
+
+std::string Short(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", v);
+  return buffer;
+}
+
+// A table as read from DIR, with everything the checks need.
+struct Loaded {
+  TableKind kind = TableKind::kE;
+  Table table;                  // values of the primary file (EXR, else .bin, else .h)
+  std::string primary;          // its path
+  bool perTexelErrors = false;  // table.errors holds per-texel bounds (else errorMax)
+  double statedErrorMax = 0.0;  // metadata errorMax (+ storageError)
+  double storageError = 0.0;    // a half-storage header's stated rounding, when it is primary
+  // The files state bounds of their stored values, rounding included
+  // (metadata errorStorage, storage.h): no float rounding is allowed on top.
+  bool boundsCoverStorage = false;
+  NdfKind ndf = NdfKind::kGgx;
+  SmithForm smith = SmithForm::kCorrelated;
+  FresnelModel fresnel = FresnelModel::kSchlick;
+  bool usable = false;                // metadata understood: the numeric checks can run
+  std::vector<double> ref, refError;  // the quadrature at every texel, same layout as values
+
+  bool albedo() const { return kind != TableKind::kFavg; }
+  // The bound a texel's value claims: its own, or the stated maximum.
+  double Bound(size_t i) const { return perTexelErrors ? table.errors[i] : statedErrorMax; }
+};
+
+// A .bin written with --bin-type double (errorStorage=float64).
+bool BinIsFloat64(const Table &bin) {
+  const std::string *storage = bin.FindMetadata("errorStorage");
+  return storage && *storage == "float64";
+}
+
+// Coordinates of a point for the report, named by the table's axes.
+std::vector<std::pair<std::string, double>> At(const Table &t, double x, double y) {
+  const auto name = [](const std::string &axis) {
+    return axis == "perceptualRoughness" ? std::string("roughness") : axis;
+  };
+  std::vector<std::pair<std::string, double>> at{{name(t.x.name), x}};
+  if (t.is2D()) at.emplace_back(name(t.y.name), y);
+  return at;
+}
+
+std::string Where(const std::vector<std::pair<std::string, double>> &at) {
+  std::string s = "(";
+  for (size_t i = 0; i < at.size(); ++i)
+    s += (i ? ", " : "") + at[i].first + " " + Short(at[i].second);
+  return s + ")";
+}
+
+class Checker {
+ public:
+  // suffix: "" for E, Eavg, Favg, dfg; "_beckmann" for E_beckmann, ...
+  Checker(const std::string &dir, const CheckOptions &options, std::string suffix)
+      : dir_(dir), options_(options), suffix_(std::move(suffix)) {}
+
+  CheckReport Run() {
+    const auto start = std::chrono::steady_clock::now();
+    report_.dir = dir_;
+    for (TableKind kind : kAllTables) Load(kind);
+    if (tables_.empty()) {
+      Add(dir_, "tables", CheckStatus::kFail,
+          "no table files (E, Eavg, Favg, dfg as .exr, .bin or .h) found in " + dir_);
+    } else {
+      ComputeReferences();
+      for (auto &[kind, t] : tables_) {
+        if (!t.usable) continue;
+        CheckFinite(t);
+        CheckRange(t);
+        CheckTexels(t);
+        CheckPoints(t);
+        if (kind == TableKind::kEavg || kind == TableKind::kFavg) CheckMonotonic(t);
+        if (kind == TableKind::kFavg) CheckClosedForm(t);
+      }
+      CheckIdentity();
+      CheckAverage();
+      CheckFurnace();
+    }
+    report_.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report_;
+  }
+
+ private:
+  void Add(const std::string &subject, const std::string &check, CheckStatus status,
+           const std::string &detail, double worst = 0.0, double allowed = 0.0,
+           std::vector<std::pair<std::string, double>> at = {}) {
+    report_.results.push_back({subject, check, status, detail, worst, allowed, std::move(at)});
+  }
+
+  // ---- reading ---------------------------------------------------------
+
+  static bool IsClosedFormHeader(const std::string &path) {
+    std::ifstream file(path);
+    for (std::string line; file && std::getline(file, line) && line.rfind("//", 0) == 0;)
+      if (line.rfind("//   content: closed form (Schlick), no table", 0) == 0) return true;
+    return false;
+  }
+
+  void Load(TableKind kind) {
+    const std::string name = Name(kind);
+    const fs::path base = fs::path(dir_) / name;
+    const std::string exrPath = base.string() + ".exr", binPath = base.string() + ".bin",
+                      hPath = base.string() + ".h", errPath = base.string() + ".err.exr";
+    std::optional<Table> exr, bin, err;
+    std::optional<HeaderValues> header;
+    std::vector<std::string> problems;
+    const auto attempt = [&](const std::string &path, auto read) {
+      std::error_code ec;
+      if (!fs::exists(path, ec)) return;
+      try {
+        read();
+        report_.files.push_back(path);
+      } catch (const IoError &e) {
+        problems.push_back(e.what());
+      }
+    };
+    // A bake plan whose compensated materials all use Schlick writes Favg.h
+    // with the closed form and no table (plan.h): nothing numeric to check.
+    if (kind == TableKind::kFavg && IsClosedFormHeader(hPath)) {
+      report_.files.push_back(hPath);
+      Add(name, "closed form", CheckStatus::kPass,
+          hPath + ": Schlick's closed form F_avg = 20/21 F0 + 1/21 F90, no table (a bake plan's)");
+      return;
+    }
+    attempt(exrPath, [&] { exr = ReadExrTable(exrPath); });
+    attempt(binPath, [&] { bin = ReadBinaryTable(binPath); });
+    attempt(hPath, [&] { header = ReadHeaderValues(hPath); });
+    attempt(errPath, [&] { err = ReadExrTable(errPath); });
+    const bool present = exr || bin || header || !problems.empty();
+    if (!present) return;
+    Loaded &t = tables_[kind];
+    t.kind = kind;
+    for (const std::string &p : problems) Add(name, "metadata", CheckStatus::kFail, p);
+
+    // The primary file: EXR, else .bin, else the header (whose metadata
+    // comment carries the axes).
+    if (exr) {
+      t.table = *exr;
+      t.primary = exrPath;
+    } else if (bin) {
+      t.table = *bin;
+      t.primary = binPath;
+    } else if (header) {
+      t.primary = hPath;
+      t.table.metadata = header->metadata;
+      t.table.channels = header->channels;
+      t.table.values.assign(header->values.begin(), header->values.end());
+      const std::string *ax = t.table.FindMetadata("axisX"), *ay = t.table.FindMetadata("axisY");
+      bool ok = ax && ParseAxisDescription(*ax, &t.table.x);
+      if (ay && !ParseAxisDescription(*ay, &t.table.y)) t.table.y = LinearAxis("", 0.0, 1.0, 1);
+      ok = ok && t.table.x.count == header->width && t.table.y.count == header->height;
+      if (!ok) {
+        Add(name, "metadata", CheckStatus::kFail,
+            hPath + ": its comment lacks axisX / axisY matching kWidth and kHeight");
+        return;
+      }
+    } else {
+      return;  // nothing readable; the reasons are reported above
+    }
+    if (!CheckMetadata(t)) return;
+    // A half-storage header as the primary file: its values carry the
+    // storage rounding too, which the header states (storageErrorMax).
+    if (!exr && !bin && header && header->half) {
+      const std::string *storage = t.table.FindMetadata("storageErrorMax");
+      char *end = nullptr;
+      const double extra = storage ? std::strtod(storage->c_str(), &end) : -1.0;
+      if (!storage || *end != '\0' || !(extra >= 0.0 && extra <= 1.0)) {
+        Add(name, "metadata", CheckStatus::kFail,
+            hPath + ": half storage without a valid storageErrorMax");
+        return;
+      }
+      t.storageError = extra;
+      // Older headers stated errorMax for the float values; the half rounding
+      // is theirs to add. Now kErrorMax covers it (errorStorage=half).
+      if (!t.boundsCoverStorage) t.statedErrorMax += extra;
+    }
+    // Per-texel bounds: the .bin error block, else T.err.exr. A float64 .bin
+    // bounds its own values: for the primary's, its rounding is added.
+    if (bin && bin->errors.size() == t.table.values.size()) {
+      t.table.errors = bin->errors;
+      if (BinIsFloat64(*bin))
+        for (size_t i = 0; i < t.table.errors.size(); ++i)
+          t.table.errors[i] += std::abs(t.table.values[i] - bin->values[i]);
+      t.perTexelErrors = true;
+    } else if (err && err->values.size() == t.table.values.size()) {
+      t.table.errors = err->values;
+      t.perTexelErrors = true;
+    } else {
+      t.table.errors.assign(t.table.values.size(), t.statedErrorMax);
+    }
+    CheckFormats(t, exr, bin, header, err);
+    t.usable = true;
+  }
+
+  // The metadata: the table lutbake claims to have written. False when the
+  // numeric checks cannot run on it.
+  bool CheckMetadata(Loaded &t) {
+    const std::string name = Name(t.kind);
+    Table &table = t.table;
+    std::vector<std::string> problems;
+    const auto meta = [&](const std::string &key) -> std::string {
+      const std::string *v = table.FindMetadata(key);
+      if (!v) problems.push_back("key '" + key + "' missing");
+      return v ? *v : std::string();
+    };
+    if (meta("table") != TableName(t.kind))
+      problems.push_back("table is not '" + std::string(TableName(t.kind)) + "'");
+    const int channels = t.kind == TableKind::kDfg ? 2 : 1;
+    if (table.channels != channels)
+      problems.push_back(std::to_string(table.channels) + " channels, expected " +
+                         std::to_string(channels));
+    t.boundsCoverStorage = table.FindMetadata("errorStorage") != nullptr;
+    const std::string errorMax = meta("errorMax");
+    char *end = nullptr;
+    t.statedErrorMax = std::strtod(errorMax.c_str(), &end);
+    if (errorMax.empty() || *end != '\0' || !(t.statedErrorMax >= 0.0) ||
+        !std::isfinite(t.statedErrorMax))
+      problems.push_back("errorMax '" + errorMax + "' is not a non-negative number");
+    if (meta("texelConvention").rfind("texel i of N holds the value at u = (i + 0.5) / N", 0) != 0)
+      problems.push_back("texelConvention is not lutbake's (texel centres)");
+    if (t.albedo()) {
+      const std::string ndf = meta("ndf"), smith = meta("smith");
+      if (ndf != "ggx" && ndf != "beckmann") problems.push_back("ndf '" + ndf + "' unknown");
+      if (smith != "correlated" && smith != "separable")
+        problems.push_back("smith '" + smith + "' unknown");
+      t.ndf = ndf == "beckmann" ? NdfKind::kBeckmann : NdfKind::kGgx;
+      t.smith = smith == "separable" ? SmithForm::kSeparable : SmithForm::kCorrelated;
+      if (meta("alpha") != "alpha = perceptualRoughness^2")
+        problems.push_back("alpha is not perceptualRoughness^2");
+      const Axis &r = t.kind == TableKind::kEavg ? table.x : table.y;
+      if (r.name != "perceptualRoughness" || r.min < 0.0 || r.max > 1.0)
+        problems.push_back("the roughness axis is not perceptualRoughness within [0, 1]");
+      if (t.kind != TableKind::kEavg &&
+          (table.x.name != "mu" || table.x.min < 0.0 || table.x.max > 1.0))
+        problems.push_back("axis x is not mu within [0, 1]");
+      if (t.kind == TableKind::kEavg && table.is2D()) problems.push_back("Eavg is not 1D");
+      if (t.kind != TableKind::kEavg && !table.is2D()) problems.push_back(name + " is not 2D");
+    } else {
+      const std::string fresnel = meta("fresnel");
+      if (fresnel == "schlick" && table.x.name == "F0" && !table.is2D() && table.x.min >= 0.0 &&
+          table.x.max <= 1.0)
+        t.fresnel = FresnelModel::kSchlick;
+      else if (fresnel == "dielectric" && table.x.name == "eta" && !table.is2D() &&
+               table.x.min >= 0.0)
+        t.fresnel = FresnelModel::kDielectric;
+      else if (fresnel == "conductor" && table.x.name == "eta" && table.y.name == "k" &&
+               table.x.min >= 0.0 && table.y.min >= 0.0)
+        t.fresnel = FresnelModel::kConductor;
+      else
+        problems.push_back("fresnel '" + fresnel + "' with axes " + table.x.name + ", " +
+                           (table.y.name.empty() ? "none" : table.y.name) +
+                           " is not a Favg lutbake writes");
+    }
+    if (!problems.empty()) {
+      std::string detail = t.primary + ": ";
+      for (size_t i = 0; i < problems.size(); ++i) detail += (i ? "; " : "") + problems[i];
+      Add(name, "metadata", CheckStatus::kFail, detail);
+      return false;
+    }
+    std::string model = t.albedo()
+                            ? std::string(ToString(t.ndf)) + " " + std::string(ToString(t.smith))
+                            : "fresnel " + std::string(ToString(t.fresnel));
+    Add(name, "metadata", CheckStatus::kPass,
+        t.primary + ": " + std::to_string(table.width()) + " x " + std::to_string(table.height()) +
+            ", " + model + ", " + DescribeAxis(table.x) +
+            (table.is2D() ? " x " + DescribeAxis(table.y) : "") + ", errorMax " +
+            Short(t.statedErrorMax));
+    return true;
+  }
+
+  // Every format present holds the primary's numbers, bit for bit as float32,
+  // and the same axes.
+  void CheckFormats(const Loaded &t, const std::optional<Table> &exr,
+                    const std::optional<Table> &bin, const std::optional<HeaderValues> &header,
+                    const std::optional<Table> &err) {
+    const std::string name = Name(t.kind);
+    std::vector<std::string> compared, problems;
+    const auto sameValues = [&](const std::vector<double> &a, const std::string &what,
+                                bool half = false) {
+      if (a.size() != t.table.values.size()) {
+        problems.push_back(what + " has " + std::to_string(a.size()) + " values, " + t.primary +
+                           " " + std::to_string(t.table.values.size()));
+        return;
+      }
+      for (size_t i = 0; i < a.size(); ++i)
+        if (static_cast<float>(a[i]) !=
+                static_cast<float>(half ? RoundToHalf(t.table.values[i]) : t.table.values[i]) &&
+            !(std::isnan(a[i]) && std::isnan(t.table.values[i]))) {
+          const int c = static_cast<int>(i % t.table.channels);
+          const size_t texel = i / t.table.channels;
+          problems.push_back(
+              what + " differs at texel (" + std::to_string(texel % t.table.width()) + ", " +
+              std::to_string(texel / t.table.width()) + ") channel " + std::to_string(c) + ": " +
+              FormatDouble(a[i]) + " against " + FormatDouble(t.table.values[i]));
+          return;
+        }
+      compared.push_back(what);
+    };
+    const auto sameAxes = [&](const Table &other, const std::string &what) {
+      if (DescribeAxis(other.x) != DescribeAxis(t.table.x) ||
+          (t.table.is2D() && DescribeAxis(other.y) != DescribeAxis(t.table.y)))
+        problems.push_back(what + " has other axes than " + t.primary);
+    };
+    if (bin && exr) {
+      sameAxes(*bin, name + ".bin");
+      sameValues(bin->values, name + ".bin");
+    }
+    if (header && (exr || bin)) {
+      // Half storage: each value must be the primary's rounded to half.
+      std::vector<double> v(header->values.begin(), header->values.end());
+      sameValues(v, name + ".h", header->half);
+    }
+    if (err) {
+      sameAxes(*err, name + ".err.exr");
+      if (bin && !BinIsFloat64(*bin) && bin->errors.size() == err->values.size()) {
+        for (size_t i = 0; i < err->values.size(); ++i)
+          if (static_cast<float>(err->values[i]) != static_cast<float>(bin->errors[i])) {
+            problems.push_back(name + ".err.exr differs from the error block of " + name + ".bin");
+            break;
+          }
+      }
+      double maxError = 0.0;
+      for (double e : err->values) maxError = std::max(maxError, e);
+      if (static_cast<float>(maxError) != static_cast<float>(t.statedErrorMax))
+        problems.push_back(name + ".err.exr has max " + FormatDouble(maxError) +
+                           ", the metadata says errorMax " + FormatDouble(t.statedErrorMax));
+    }
+    if (bin && bin->errors.size() == bin->values.size()) {
+      // The error block against the .bin's own errorMax (a float64 .bin
+      // states smaller bounds than the float32 files).
+      double maxError = 0.0, stated = -1.0;
+      for (double e : bin->errors) maxError = std::max(maxError, e);
+      if (const std::string *m = bin->FindMetadata("errorMax"))
+        stated = std::strtod(m->c_str(), nullptr);
+      const bool wide = BinIsFloat64(*bin);
+      if (wide ? maxError != stated : static_cast<float>(maxError) != static_cast<float>(stated))
+        problems.push_back(name + ".bin's error block has max " + FormatDouble(maxError) +
+                           ", its metadata says errorMax " + FormatDouble(stated));
+    }
+    if (!problems.empty()) {
+      std::string detail;
+      for (size_t i = 0; i < problems.size(); ++i) detail += (i ? "; " : "") + problems[i];
+      Add(name, "formats", CheckStatus::kFail, detail);
+    } else if (compared.empty()) {
+      Add(name, "formats", CheckStatus::kSkipped, "only " + t.primary + " present");
+    } else {
+      std::string list;
+      for (size_t i = 0; i < compared.size(); ++i) list += (i ? ", " : "") + compared[i];
+      Add(name, "formats", CheckStatus::kPass,
+          list + " hold the same float32 values as " + t.primary);
+    }
+  }
+
+  // ---- the reference ---------------------------------------------------
+
+  BakeSettings ReferenceSettings(const Loaded &t) const {
+    BakeSettings s;
+    s.ndf = t.ndf;
+    s.smith = t.smith;
+    s.fresnel = t.fresnel;
+    // The adaptive Gauss-Kronrod reference, not the bake's default panel
+    // quadrature: an independent method (another parameterisation, another
+    // rule, another error estimate) judges the table.
+    s.estimator = Estimator::kAdaptiveQuadrature;
+    // Far below what the table claims (1/64 of its errorMax), but not below
+    // the option (float32 storage rounds at 6e-8 anyway) nor above 1e-6.
+    const double tolerance = std::clamp(t.statedErrorMax / 64.0, options_.referenceTolerance, 1e-6);
+    // The quadrature is asked for tolerance / (2 kQuadratureErrorFactor)
+    // in a tolerance run.
+    s.tolerance = 2.0 * kQuadratureErrorFactor * tolerance;
+    return s;
+  }
+
+  // The value (up to 2 channels) at a point of a table's axes.
+  PointValue Reference(const Loaded &t, double x, double y) const {
+    const BakeSettings s = ReferenceSettings(t);
+    switch (t.kind) {
+      case TableKind::kE:
+      case TableKind::kDfg: return EvaluateAlbedo(t.kind, s, x, y * y, 0);
+      case TableKind::kEavg: return EvaluateAlbedoAverage(s, x * x, 0);
+      case TableKind::kFavg: return EvaluateFresnelAverage(t.fresnel, x, y);
+    }
+    return {};
+  }
+
+  // Every texel of every usable table, and the random points, in one
+  // parallel loop (the texels cost very different amounts).
+  void ComputeReferences() {
+    struct Task {
+      Loaded *t;
+      size_t texel;  // texel index, or SIZE_MAX for a random point
+      double x, y;
+      PointValue *out;
+    };
+    std::vector<Task> tasks;
+    for (auto &[kind, t] : tables_) {
+      if (!t.usable) continue;
+      const size_t texels = static_cast<size_t>(t.table.width()) * t.table.height();
+      t.ref.assign(texels * t.table.channels, 0.0);
+      t.refError.assign(texels * t.table.channels, 0.0);
+      refTexel_[kind].resize(texels);
+      for (size_t i = 0; i < texels; ++i)
+        tasks.push_back({&t, i, t.table.x.TexelCenter(static_cast<int>(i % t.table.width())),
+                         t.table.y.TexelCenter(static_cast<int>(i / t.table.width())),
+                         &refTexel_[kind][i]});
+      // Random points over the whole axis ranges, edges (where lookups clamp) included.
+      RandomStream random(HashValues({options_.seed, static_cast<uint64_t>(kind)}));
+      points_[kind].resize(static_cast<size_t>(options_.randomPoints));
+      for (RandomPoint &p : points_[kind]) {
+        p.x = t.table.x.min + (t.table.x.max - t.table.x.min) * random.NextDouble();
+        p.y = t.table.is2D() ? t.table.y.min + (t.table.y.max - t.table.y.min) * random.NextDouble()
+                             : 0.0;
+        tasks.push_back({&t, SIZE_MAX, p.x, p.y, &p.truth});
+      }
+    }
+    std::atomic<size_t> done{0};
+    // Most expensive first (E_avg integrates a whole row), for balance.
+    std::stable_sort(tasks.begin(), tasks.end(), [](const Task &a, const Task &b) {
+      return (a.t->kind == TableKind::kEavg) > (b.t->kind == TableKind::kEavg);
+    });
+    tbb::parallel_for(size_t{0}, tasks.size(), [&](size_t i) {
+      const Task &task = tasks[i];
+      *task.out = Reference(*task.t, task.x, task.y);
+      const size_t now = done.fetch_add(1) + 1;
+      if (options_.progress && now % 64 == 0)
+        options_.progress(static_cast<double>(now) / static_cast<double>(tasks.size()));
+    });
+    report_.referenceEvaluations = tasks.size();
+    for (auto &[kind, t] : tables_) {
+      if (!t.usable) continue;
+      const std::vector<PointValue> &r = refTexel_[kind];
+      for (size_t i = 0; i < r.size(); ++i)
+        for (int c = 0; c < t.table.channels; ++c) {
+          t.ref[i * t.table.channels + c] = r[i].value[c];
+          t.refError[i * t.table.channels + c] = r[i].error[c];
+        }
+    }
+  }
+
+  // ---- single tables ---------------------------------------------------
+
+  void CheckFinite(const Loaded &t) {
+    const std::string name = Name(t.kind);
+    size_t bad = 0, first = 0;
+    for (size_t i = 0; i < t.table.values.size(); ++i)
+      if (!std::isfinite(t.table.values[i]) || !std::isfinite(t.table.errors[i])) {
+        if (bad++ == 0) first = i;
+      }
+    if (bad == 0) {
+      Add(name, "finite", CheckStatus::kPass,
+          std::to_string(t.table.values.size()) + " values and their bounds, no NaN or Inf");
+      return;
+    }
+    const size_t texel = first / t.table.channels;
+    const int x = static_cast<int>(texel % t.table.width()),
+              y = static_cast<int>(texel / t.table.width());
+    const auto at = At(t.table, t.table.x.TexelCenter(x), t.table.y.TexelCenter(y));
+    Add(name, "finite", CheckStatus::kFail,
+        std::to_string(bad) + " values or bounds are NaN or Inf, the first at texel (" +
+            std::to_string(x) + ", " + std::to_string(y) + ") " + Where(at),
+        static_cast<double>(bad), 0.0, at);
+  }
+
+  void CheckRange(const Loaded &t) {
+    const std::string name = Name(t.kind);
+    const Table &table = t.table;
+    // Float rounding: a value <= 1 in double stays <= 1 in float; a sum of
+    // two rounded values may exceed 1 by one ulp.
+    constexpr double kSumSlack = 0x1p-23;
+    double worst = 0.0;
+    std::string what;
+    std::vector<std::pair<std::string, double>> at;
+    const size_t texels = static_cast<size_t>(table.width()) * table.height();
+    for (size_t i = 0; i < texels; ++i) {
+      const int x = static_cast<int>(i % table.width()), y = static_cast<int>(i / table.width());
+      const auto note = [&](double excess, const std::string &text) {
+        if (excess > worst) {
+          worst = excess;
+          what = text;
+          at = At(table, table.x.TexelCenter(x), table.y.TexelCenter(y));
+        }
+      };
+      for (int c = 0; c < table.channels; ++c) {
+        const double v = table.values[i * table.channels + c];
+        const std::string label = table.channels == 2 ? (c == 0 ? "A" : "B") : name;
+        note(-v, label + " < 0");
+        note(v - 1.0, label + " > 1");
+        note(-table.errors[i * table.channels + c], "a negative error bound");
+      }
+      if (table.channels == 2)
+        note(table.values[2 * i] + table.values[2 * i + 1] - 1.0 - kSumSlack - 2.0 * t.storageError,
+             "A + B > 1");
+    }
+    if (worst > 0.0) {
+      Add(name, "range", CheckStatus::kFail, what + " by " + Short(worst) + " at " + Where(at),
+          worst, 0.0, at);
+      return;
+    }
+    double lo = 1.0, hi = 0.0;
+    for (double v : table.values) lo = std::min(lo, v), hi = std::max(hi, v);
+    Add(name, "range", CheckStatus::kPass,
+        std::string(table.channels == 2 ? "A, B >= 0 and A + B <= 1" : "in [0, 1]") +
+            ": values from " + Short(lo) + " to " + Short(hi));
+  }
+
+  void CheckTexels(const Loaded &t) {
+    const std::string name = Name(t.kind);
+    const Table &table = t.table;
+    const size_t texels = static_cast<size_t>(table.width()) * table.height();
+    double worst = -1.0, worstAllowed = 0.0, worstReal = 0.0, realMax = 0.0, realSq = 0.0;
+    size_t worstIndex = 0, realIndex = 0, outside = 0, overStated = 0;
+    for (size_t i = 0; i < texels * table.channels; ++i) {
+      const double real = std::abs(table.values[i] - t.ref[i]);
+      const double slack =
+          t.refError[i] + (t.boundsCoverStorage ? 0.0 : FloatRounding(table.values[i]));
+      // The hard claim: within the stated maximum of the whole table.
+      const double stated = std::max(t.statedErrorMax, t.Bound(i)) + slack;
+      if (real > stated) ++overStated;
+      if (real > t.Bound(i) + slack) ++outside;
+      const double ratio = real / stated;
+      if (ratio > worst) worst = ratio, worstIndex = i, worstAllowed = stated, worstReal = real;
+      if (real > realMax) realMax = real, realIndex = i;
+      realSq += real * real;
+    }
+    const auto where = [&](size_t i) {
+      const size_t texel = i / table.channels;
+      return At(table, table.x.TexelCenter(static_cast<int>(texel % table.width())),
+                table.y.TexelCenter(static_cast<int>(texel / table.width())));
+    };
+    const size_t n = texels * table.channels;
+    // The per-texel bounds are 99% claims: more than 1% + 3 sigma outside fails.
+    const double allowedOutside =
+        std::ceil(0.01 * n + 3.0 * std::sqrt(0.01 * 0.99 * static_cast<double>(n)));
+    const std::string channel =
+        table.channels == 2 ? (realIndex % 2 == 0 ? " (A)" : " (B)") : std::string();
+    std::string detail =
+        std::to_string(n) + " values against the quadrature: max |table - truth| " +
+        Short(realMax) + " at " + Where(where(realIndex)) + channel + ", rms " +
+        Short(std::sqrt(realSq / n)) + "; stated errorMax " + Short(t.statedErrorMax);
+    if (t.perTexelErrors)
+      detail += "; " + std::to_string(outside) + " outside their own 99% bound (" +
+                Short(allowedOutside) + " allowed)";
+    if (overStated > 0) {
+      Add(name, "texels", CheckStatus::kFail,
+          std::to_string(overStated) +
+              " values differ from the truth by more than the table "
+              "claims; worst " +
+              Short(worstReal) + " at " + Where(where(worstIndex)) + ", allowed " +
+              Short(worstAllowed) + ". " + detail,
+          worstReal, worstAllowed, where(worstIndex));
+    } else if (t.perTexelErrors && static_cast<double>(outside) > allowedOutside) {
+      Add(name, "texels", CheckStatus::kFail, "too many values outside their own bounds. " + detail,
+          realMax, t.statedErrorMax, where(realIndex));
+    } else {
+      Add(name, "texels", CheckStatus::kPass, detail, realMax, worstAllowed, where(realIndex));
+    }
+  }
+
+  void CheckPoints(const Loaded &t) {
+    const std::string name = Name(t.kind);
+    const Table &table = t.table;
+    double worstLookup = 0.0, worstInterp = 0.0, worstExcess = -1.0, excessAllowed = 0.0,
+           excessValue = 0.0;
+    std::vector<std::pair<std::string, double>> atLookup, atExcess;
+    for (const RandomPoint &p : points_.at(t.kind))
+      for (int c = 0; c < table.channels; ++c) {
+        const double lookup = Lookup(table, p.x, p.y, c);
+        const double lookupRef = Lookup(table, t.ref, p.x, p.y, c);
+        const double truth = p.truth.value[c];
+        const double real = std::abs(lookup - truth);
+        if (real > worstLookup) {
+          worstLookup = real;
+          worstInterp = std::abs(lookupRef - truth);
+          atLookup = At(table, p.x, p.y);
+        }
+        // The lookups of the table and of exact texel values differ by the
+        // texels' errors, weighted as the lookup weights them (weights sum
+        // to 1): at most the stated errorMax.
+        const double allowed =
+            t.statedErrorMax + Lookup(table, t.refError, p.x, p.y, c) + 2.0 * FloatRounding(lookup);
+        const double excess = std::abs(lookup - lookupRef) - allowed;
+        if (excess > worstExcess) {
+          worstExcess = excess;
+          excessAllowed = allowed;
+          excessValue = std::abs(lookup - lookupRef);
+          atExcess = At(table, p.x, p.y);
+        }
+      }
+    const std::string detail =
+        std::to_string(points_.at(t.kind).size()) +
+        " random points, bilinear lookup against the quadrature at the point: max |lookup - "
+        "truth| " +
+        Short(worstLookup) + " at " + Where(atLookup) +
+        ", of which interpolation of exact texels " + Short(worstInterp);
+    if (worstExcess > 0.0)
+      Add(name, "points", CheckStatus::kFail,
+          "the lookup departs from a lookup of exact texels by " + Short(excessValue) + " at " +
+              Where(atExcess) + ", allowed " + Short(excessAllowed) + ". " + detail,
+          excessValue, excessAllowed, atExcess);
+    else
+      Add(name, "points", CheckStatus::kPass, detail, worstLookup, 0.0, atLookup);
+  }
+
+  void CheckMonotonic(const Loaded &t) {
+    const std::string name = Name(t.kind);
+    const Table &table = t.table;
+    int direction = 0;  // +1 non-decreasing, -1 non-increasing along x
+    double from = table.x.min;
+    std::string claim;
+    if (t.kind == TableKind::kEavg) {
+      direction = -1;
+      claim = "E_avg non-increasing in roughness";
+    } else if (t.fresnel == FresnelModel::kSchlick) {
+      direction = +1;
+      claim = "F_avg increasing in F0";
+    } else if (t.fresnel == FresnelModel::kDielectric) {
+      direction = +1;
+      from = 1.0;
+      claim = "F_avg increasing in eta for eta >= 1";
+    } else {
+      Add(name, "monotonic", CheckStatus::kSkipped,
+          "conductor F_avg is not monotonic in k for small eta (eta 0.1: it falls as k grows "
+          "from 0), so nothing is claimed");
+      return;
+    }
+    double worst = 0.0, worstAllowed = 0.0, worstExcess = 0.0;
+    std::vector<std::pair<std::string, double>> at;
+    int pairs = 0;
+    for (int y = 0; y < table.height(); ++y)
+      for (int x = 0; x + 1 < table.width(); ++x) {
+        if (table.x.TexelCenter(x) < from) continue;
+        const size_t a = table.index(x, y, 0), b = table.index(x + 1, y, 0);
+        // A step against the claimed direction, beyond what the two
+        // texels' bounds allow, violates it.
+        const double against = direction * (table.values[a] - table.values[b]);
+        const double allowed = t.Bound(a) + t.Bound(b) + FloatRounding(table.values[a]) +
+                               FloatRounding(table.values[b]);
+        ++pairs;
+        if (against - allowed > worstExcess) {
+          worstExcess = against - allowed;
+          worst = against;
+          worstAllowed = allowed;
+          at = At(table, table.x.TexelCenter(x), table.y.TexelCenter(y));
+        }
+      }
+    if (worstExcess > 0.0)
+      Add(name, "monotonic", CheckStatus::kFail,
+          claim + " is violated by " + Short(worst) + " between neighbours at " + Where(at) +
+              " (their bounds allow " + Short(worstAllowed) + ")",
+          worst, worstAllowed, at);
+    else
+      Add(name, "monotonic", CheckStatus::kPass,
+          claim + ": all " + std::to_string(pairs) + " neighbour pairs within their bounds");
+  }
+
+  void CheckClosedForm(const Loaded &t) {
+    if (t.fresnel != FresnelModel::kSchlick) return;
+    double worst = 0.0;
+    std::vector<std::pair<std::string, double>> at;
+    for (int x = 0; x < t.table.width(); ++x) {
+      const double f0 = t.table.x.TexelCenter(x);
+      const double exact = f0 * (20.0 / 21.0) + 1.0 / 21.0;
+      const double excess =
+          std::abs(t.table.values[x] - exact) - FloatRounding(exact) - t.storageError - 1e-15;
+      if (excess > worst) worst = excess, at = At(t.table, f0, 0.0);
+    }
+    if (worst > 0.0)
+      Add("Favg", "closed form", CheckStatus::kFail,
+          "Schlick F_avg departs from 20/21 F0 + 1/21 by " + Short(worst) +
+              " beyond float "
+              "rounding at " +
+              Where(at),
+          worst, 0.0, at);
+    else
+      Add("Favg", "closed form", CheckStatus::kPass,
+          "Schlick F_avg = 20/21 F0 + 1/21 at every texel, to float rounding");
+  }
+
+  // ---- across tables ---------------------------------------------------
+
+  const Loaded *Usable(TableKind kind) const {
+    const auto it = tables_.find(kind);
+    return it != tables_.end() && it->second.usable ? &it->second : nullptr;
+  }
+
+  // Same NDF and Smith form, or a failed check that says they differ.
+  bool SameModel(const Loaded &a, const Loaded &b, const std::string &subject,
+                 const std::string &check) {
+    if (a.ndf == b.ndf && a.smith == b.smith) return true;
+    Add(subject, check, CheckStatus::kFail,
+        Name(a.kind) + " is " + std::string(ToString(a.ndf)) + " " +
+            std::string(ToString(a.smith)) + " but " + Name(b.kind) + " is " +
+            std::string(ToString(b.ndf)) + " " + std::string(ToString(b.smith)) +
+            ": the set mixes models");
+    return false;
+  }
+
+  // A + B = E at E's texel centres, dfg interpolated there.
+  void CheckIdentity() {
+    const Loaded *e = Usable(TableKind::kE), *d = Usable(TableKind::kDfg);
+    if (!e || !d) return;
+    if (!SameModel(*e, *d, "E+dfg" + suffix_, "identity")) return;
+    const Table &te = e->table, &td = d->table;
+    double worst = 0.0, worstExcess = -1.0, excessValue = 0, excessAllowed = 0;
+    std::vector<std::pair<std::string, double>> at, atExcess;
+    for (int y = 0; y < te.height(); ++y)
+      for (int x = 0; x < te.width(); ++x) {
+        const double mu = te.x.TexelCenter(x), r = te.y.TexelCenter(y);
+        const size_t i = te.index(x, y, 0);
+        const double sum = Lookup(td, mu, r, 0) + Lookup(td, mu, r, 1);
+        const double dev = std::abs(sum - te.values[i]);
+        // What exact texels give: the interpolation error of A + B at this point.
+        const double exactDev =
+            std::abs(Lookup(td, d->ref, mu, r, 0) + Lookup(td, d->ref, mu, r, 1) - e->ref[i]);
+        const double allowed = exactDev + 2.0 * d->statedErrorMax + e->statedErrorMax +
+                               Lookup(td, d->refError, mu, r, 0) +
+                               Lookup(td, d->refError, mu, r, 1) + e->refError[i] +
+                               2.0 * FloatRounding(sum) + FloatRounding(te.values[i]);
+        if (dev > worst) worst = dev, at = At(te, mu, r);
+        if (dev - allowed > worstExcess)
+          worstExcess = dev - allowed, excessValue = dev, excessAllowed = allowed,
+          atExcess = At(te, mu, r);
+      }
+    const std::string where =
+        "at E's " + std::to_string(te.width() * te.height()) + " texel centres (dfg interpolated)";
+    if (worstExcess > 0.0)
+      Add("E+dfg" + suffix_, "identity", CheckStatus::kFail,
+          "A + B - E = " + Short(excessValue) + " at " + Where(atExcess) + ", more than the " +
+              Short(excessAllowed) + " that the tables' bounds and interpolation allow (" + where +
+              ")",
+          excessValue, excessAllowed, atExcess);
+    else
+      Add("E+dfg" + suffix_, "identity", CheckStatus::kPass,
+          "A + B = E " + where + ": max |A + B - E| " + Short(worst) + " at " + Where(at), worst,
+          0.0, at);
+  }
+
+  // E_avg = 2 integral E mu dmu from E's rows, where E's rows and E_avg's
+  // texels sit at the same roughness.
+  void CheckAverage() {
+    const Loaded *e = Usable(TableKind::kE), *a = Usable(TableKind::kEavg);
+    if (!e || !a) return;
+    if (!SameModel(*e, *a, "E+Eavg" + suffix_, "average")) return;
+    const Table &te = e->table, &ta = a->table;
+    if (DescribeAxis(te.y) != DescribeAxis(ta.x) || te.x.min != 0.0 || te.x.max != 1.0) {
+      Add("E+Eavg" + suffix_, "average", CheckStatus::kSkipped,
+          "E's rows and E_avg's texels are not at the same roughness, or E does not span mu in "
+          "[0, 1]");
+      return;
+    }
+    double worst = 0.0, worstExcess = -1.0, excessValue = 0, excessAllowed = 0;
+    std::vector<std::pair<std::string, double>> at, atExcess;
+    const int n = te.width();
+    for (int y = 0; y < te.height(); ++y) {
+      // The midpoint rule over E's texel centres, for the table and for exact texels.
+      double rule = 0.0, ruleExact = 0.0, ruleRefError = 0.0;
+      for (int x = 0; x < n; ++x) {
+        const double w = 2.0 * te.x.TexelCenter(x) / n;
+        rule += w * te.values[te.index(x, y, 0)];
+        ruleExact += w * e->ref[te.index(x, y, 0)];
+        ruleRefError += w * e->refError[te.index(x, y, 0)];
+      }
+      const double eavg = ta.values[y], eavgRef = a->ref[y];
+      const double dev = std::abs(rule - eavg);
+      const double allowed = std::abs(ruleExact - eavgRef) + e->statedErrorMax + a->statedErrorMax +
+                             ruleRefError + a->refError[y] + 2.0 * FloatRounding(eavg);
+      const double r = ta.x.TexelCenter(y);
+      if (dev > worst) worst = dev, at = At(ta, r, 0.0);
+      if (dev - allowed > worstExcess)
+        worstExcess = dev - allowed, excessValue = dev, excessAllowed = allowed,
+        atExcess = At(ta, r, 0.0);
+    }
+    if (worstExcess > 0.0)
+      Add("E+Eavg" + suffix_, "average", CheckStatus::kFail,
+          "E_avg differs from 2 sum E mu / N over E's row by " + Short(excessValue) + " at " +
+              Where(atExcess) + ", more than the " + Short(excessAllowed) +
+              " the bounds and the midpoint rule on exact texels allow",
+          excessValue, excessAllowed, atExcess);
+    else
+      Add("E+Eavg" + suffix_, "average", CheckStatus::kPass,
+          "E_avg against the midpoint rule 2 sum E mu / N over each row of E: max deviation " +
+              Short(worst) + " at " + Where(at),
+          worst, 0.0, at);
+  }
+
+  // The white furnace of the Kulla-Conty lobe built from the baked E and
+  // E_avg through bilinear lookups, on a fine (mu, r) grid:
+  //   E(mu) + integral f_ms cos = E_o + (1 - E_o) (1 - E~) / (1 - E_avg),
+  //   E~ = 2 integral_0^1 E_lookup(mu_i) mu_i dmu_i (exact for a piecewise-linear lookup),
+  // so the deviation from 1 is d = (1 - E_o) (E_avg - E~) / (1 - E_avg).
+  void CheckFurnace() {
+    const Loaded *e = Usable(TableKind::kE), *a = Usable(TableKind::kEavg);
+    if (!e || !a) return;
+    if (!SameModel(*e, *a, "E+Eavg" + suffix_, "furnace")) return;
+    const Table &te = e->table, &ta = a->table;
+    if (te.x.min != 0.0 || te.x.max != 1.0) {
+      Add("E+Eavg" + suffix_, "furnace", CheckStatus::kSkipped,
+          "E does not span mu in [0, 1], so integral f_ms cos cannot be formed");
+      return;
+    }
+    const int g = std::max(2, options_.furnaceGrid);
+    // The roughness range both tables cover.
+    const double rLo = std::max(te.y.min, ta.x.min), rHi = std::min(te.y.max, ta.x.max);
+    const double errE = e->statedErrorMax, errA = a->statedErrorMax;
+    const double refErrorE = *std::max_element(e->refError.begin(), e->refError.end());
+    double worst = 0.0, worstRef = 0.0, worstExcess = -1.0, excessValue = 0, excessAllowed = 0;
+    std::vector<std::pair<std::string, double>> at, atRef, atExcess;
+    int notJudged = 0, undefined = 0;
+    double notJudgedBelow = -1.0, undefinedBelow = -1.0;
+    for (int j = 0; j < g; ++j) {
+      const double r = rLo + (rHi - rLo) * j / (g - 1);
+      const double avg = Lookup(ta, r, 0.0, 0), avgRef = Lookup(ta, a->ref, r, 0.0, 0);
+      const double mix = LookupMuAverage(te, te.values, r, 0);
+      const double mixRef = LookupMuAverage(te, e->ref, r, 0);
+      const double epsA = errA + FloatRounding(avg) + Lookup(ta, a->refError, r, 0.0, 0);
+      const double epsE = errE + FloatRounding(1.0) + refErrorE;
+      // E_avg = 1 (it rounds there as r -> 0 in float): f_ms is 0 / 0 and an
+      // engine must guard the division. Reported, not judged.
+      if (!(1.0 - avg > 0.0) || !(1.0 - avgRef > 0.0)) {
+        undefined += g;
+        undefinedBelow = std::max(undefinedBelow, r);
+        continue;
+      }
+      // Where 1 - E_avg is within ten times E_avg's error the lobe's
+      // normalisation is not determined by the table: the deviation is
+      // reported but not judged against exact texels.
+      const bool judged = 1.0 - avg > 10.0 * epsA;
+      if (!judged) {
+        notJudged += g;
+        notJudgedBelow = std::max(notJudgedBelow, r);
+      }
+      for (int i = 0; i < g; ++i) {
+        const double mu = static_cast<double>(i) / (g - 1);
+        const double eo = Lookup(te, mu, r, 0), eoRef = Lookup(te, e->ref, mu, r, 0);
+        const double q = (avg - mix) / (1.0 - avg);
+        const double d = (1.0 - eo) * q;
+        const double dRef = (1.0 - eoRef) * (avgRef - mixRef) / (1.0 - avgRef);
+        if (std::abs(d) > worst) worst = std::abs(d), at = {{"mu", mu}, {"roughness", r}};
+        if (std::abs(dRef) > worstRef)
+          worstRef = std::abs(dRef), atRef = {{"mu", mu}, {"roughness", r}};
+        if (!judged) continue;
+        // First-order propagation of the bounds of E_o, E~ and E_avg, with
+        // 20% for the second-order terms (epsA < (1 - E_avg) / 10 here).
+        const double allowed = 1.2 * (std::abs(q) * epsE + (1.0 - eo) / (1.0 - avg) * epsE +
+                                      (1.0 - eo) * std::abs(1.0 - mix) / Sqr(1.0 - avg) * epsA);
+        const double excess = std::abs(d - dRef) - allowed;
+        if (excess > worstExcess)
+          worstExcess = excess, excessValue = std::abs(d - dRef), excessAllowed = allowed,
+          atExcess = {{"mu", mu}, {"roughness", r}};
+      }
+    }
+    std::string detail = "E + integral f_ms cos - 1 over " + std::to_string(g) + " x " +
+                         std::to_string(g) + " (mu, r) in [0, 1] x [" + Short(rLo) + ", " +
+                         Short(rHi) + "]: max |deviation| " + Short(worst) + " at " + Where(at) +
+                         "; exact texels at the same places give " + Short(worstRef) + " at " +
+                         Where(atRef);
+    if (notJudged > 0)
+      detail += "; " + std::to_string(notJudged) + " points with r <= " + Short(notJudgedBelow) +
+                " not judged against exact texels (1 - E_avg within 10x E_avg's error)";
+    if (undefined > 0)
+      detail += "; E_avg is 1 at r <= " + Short(undefinedBelow) +
+                ": f_ms is 0 / 0 there and an engine must guard it";
+    if (worstExcess > 0.0)
+      Add("E+Eavg" + suffix_, "furnace", CheckStatus::kFail,
+          "the baked deviation departs from that of exact texels by " + Short(excessValue) +
+              " at " + Where(atExcess) + ", more than the " + Short(excessAllowed) +
+              " the tables' bounds allow. " + detail,
+          excessValue, excessAllowed, atExcess);
+    else
+      Add("E+Eavg" + suffix_, "furnace", CheckStatus::kPass, detail, worst, 0.0, at);
+  }
+
+  struct RandomPoint {
+    double x = 0, y = 0;
+    PointValue truth;
+  };
+
+  std::string Name(TableKind kind) const { return TableName(kind) + suffix_; }
+
+  std::string dir_;
+  CheckOptions options_;
+  std::string suffix_;
+  CheckReport report_;
+  std::map<TableKind, Loaded> tables_;
+  std::map<TableKind, std::vector<PointValue>> refTexel_;
+  std::map<TableKind, std::vector<RandomPoint>> points_;
+};
+
+}  // namespace
+
+CheckReport CheckBakedSet(const std::string &dir, const CheckOptions &options) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw IoError(dir + " is not a directory");
+  // A bake plan may write variants (E_beckmann, Favg_dielectric, ...): each
+  // suffix is checked as a set of its own.
+  static const std::regex kTableFile(
+      R"(^(Eavg|Favg|dfg|E)(_[A-Za-z0-9_]+)?(\.err)?\.(exr|bin|h)$)");
+  std::set<std::string> suffixes;
+  for (const auto &entry : fs::directory_iterator(dir, ec)) {
+    std::smatch m;
+    const std::string file = entry.path().filename().string();
+    if (std::regex_match(file, m, kTableFile)) suffixes.insert(m[2].str());
+  }
+  if (suffixes.empty()) suffixes.insert("");
+  CheckReport report;
+  for (const std::string &suffix : suffixes) {
+    const CheckReport part = Checker(dir, options, suffix).Run();
+    report.dir = part.dir;
+    report.files.insert(report.files.end(), part.files.begin(), part.files.end());
+    report.results.insert(report.results.end(), part.results.begin(), part.results.end());
+    report.referenceEvaluations += part.referenceEvaluations;
+    report.seconds += part.seconds;
+  }
+  return report;
+}
+
+}  // namespace lutbake

@@ -1,0 +1,289 @@
+#include "lutbake/validation/report.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <thread>
+
+#include "lutbake/integrators/reference_integrator.h"
+
+namespace lutbake {
+
+namespace {
+
+// Reference values of every texel, [texel][channel].
+std::vector<std::array<double, 2>> ReferenceValues(const ReportSettings &s, TableKind kind,
+                                                   const Table &layout) {
+  const size_t texels = static_cast<size_t>(layout.width()) * layout.height();
+  std::vector<std::array<double, 2>> ref(texels);
+  tbb::parallel_for(size_t(0), texels, [&](size_t t) {
+    const int ix = static_cast<int>(t % layout.width()), iy = static_cast<int>(t / layout.width());
+    if (kind == TableKind::kEavg) {
+      const double r = layout.x.TexelCenter(ix);
+      ref[t] = {IntegrateReferenceAlbedoAverage(Ndf{s.ndf, r * r}, s.smith, 1e-11).value, 0.0};
+      return;
+    }
+    const double r = layout.y.TexelCenter(iy);
+    const ReferenceAlbedo a =
+        IntegrateReferenceAlbedo(Ndf{s.ndf, r * r}, s.smith, layout.x.TexelCenter(ix), 1e-12);
+    ref[t] = {kind == TableKind::kDfg ? a.A : a.E, a.B};
+  });
+  return ref;
+}
+
+BakeSettings BaseSettings(const ReportSettings &s) {
+  BakeSettings b;
+  b.ndf = s.ndf;
+  b.smith = s.smith;
+  b.sizeE = b.sizeEavg = b.sizeDfg = b.sizeFavg = s.size;
+  b.seed = s.seed;
+  b.replicates = kDefaultReplicates;
+  return b;
+}
+
+ReportRow Measure(TableKind kind, const BakeSettings &b,
+                  const std::vector<std::array<double, 2>> &ref) {
+  BakeStats stats;
+  const Table t = BakeTable(kind, b, {}, &stats);
+  ReportRow row;
+  row.table = kind;
+  row.estimator = b.estimator;
+  row.seconds = stats.seconds;
+  const size_t texels = ref.size();
+  row.samplesPerTexel =
+      static_cast<double>(IsQuadrature(b.estimator) ? stats.evaluations : stats.samples) /
+      static_cast<double>(texels);
+  double sumSq = 0;
+  size_t within = 0;
+  for (size_t i = 0; i < texels; ++i) {
+    const int ix = static_cast<int>(i % t.width()), iy = static_cast<int>(i / t.width());
+    double e = 0;
+    bool ok = true;
+    for (int c = 0; c < t.channels; ++c) {
+      const double ec = std::abs(t.values[i * t.channels + c] - ref[i][c]);
+      const double bound = t.errors[i * t.channels + c];
+      e = std::max(e, ec);
+      ok = ok && ec <= bound;
+      row.maxBound = std::max(row.maxBound, bound);
+    }
+    within += ok;
+    row.maxError = std::max(row.maxError, e);
+    sumSq += e * e;
+    if (ix == 0) row.grazingColumnMax = std::max(row.grazingColumnMax, e);
+    if (iy == 0 && t.is2D()) row.smoothestRowMax = std::max(row.smoothestRowMax, e);
+  }
+  // A 1D table (E_avg) has no grazing column; its first texel is the smoothest.
+  if (!t.is2D()) {
+    row.smoothestRowMax = row.grazingColumnMax;
+    row.grazingColumnMax = 0;
+  }
+  row.rmsError = std::sqrt(sumSq / static_cast<double>(texels));
+  row.withinBound = static_cast<double>(within) / static_cast<double>(texels);
+  return row;
+}
+
+std::string Format(const char *format, double v) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, v);
+  return buffer;
+}
+
+}  // namespace
+
+std::vector<ReportRow> RunReport(const ReportSettings &s, const ReportProgressFn &progress) {
+  std::vector<ReportRow> rows;
+  const double share = s.budgetSeconds / static_cast<double>(std::max<size_t>(
+                                             1, s.tables.size() * s.estimators.size()));
+  for (TableKind kind : s.tables) {
+    if (progress) progress(std::string("reference values of ") + TableName(kind));
+    // The layout (axes) of the report table, as BakeTable makes it.
+    Table layout;
+    layout.x = kind == TableKind::kEavg ? RoughnessAxis(s.size) : MuAxis(s.size);
+    layout.y = kind == TableKind::kEavg ? LinearAxis("", 0.0, 1.0, 1) : RoughnessAxis(s.size);
+    const std::vector<std::array<double, 2>> ref = ReferenceValues(s, kind, layout);
+    for (Estimator estimator : s.estimators) {
+      BakeSettings b = BaseSettings(s);
+      b.estimator = estimator;
+      double spent = 0, last = 0;
+      const bool quadrature = IsQuadrature(estimator);
+      for (int step = 0;; ++step) {
+        if (quadrature) {
+          b.tolerance = std::pow(10.0, -2 - step);
+          if (b.tolerance < 1e-10) break;
+        } else {
+          b.samples = uint64_t{4} << step;
+          if (b.samples > kDefaultMaxSamples) break;
+        }
+        // The next run costs about twice the last (half again for the
+        // quadrature's next decade); stop when it would overrun the share.
+        const double predicted = last * (quadrature ? 1.5 : 2.0);
+        if (step > 0 && spent + predicted > share) break;
+        if (progress) {
+          char line[160];
+          std::snprintf(line, sizeof line, "%s %-11s %s %-10.3g spent %6.1f s of %.1f s",
+                        TableName(kind), std::string(ToString(estimator)).c_str(),
+                        quadrature ? "tolerance" : "samples  ",
+                        quadrature ? b.tolerance : static_cast<double>(b.samples), spent, share);
+          progress(line);
+        }
+        ReportRow row = Measure(kind, b, ref);
+        row.tolerance = quadrature ? b.tolerance : 0.0;
+        last = row.seconds;
+        spent += row.seconds;
+        rows.push_back(row);
+      }
+    }
+  }
+  return rows;
+}
+
+std::string ReportCsv(const std::vector<ReportRow> &rows) {
+  std::ostringstream out;
+  out << "table,estimator,samples_per_texel,tolerance,seconds,max_error,rms_error,"
+         "grazing_column_max,smoothest_row_max,max_bound,within_bound\n";
+  for (const ReportRow &r : rows) {
+    out << TableName(r.table) << ',' << ToString(r.estimator) << ','
+        << Format("%.17g", r.samplesPerTexel) << ',' << Format("%.3g", r.tolerance) << ','
+        << Format("%.6g", r.seconds) << ',' << Format("%.6e", r.maxError) << ','
+        << Format("%.6e", r.rmsError) << ',' << Format("%.6e", r.grazingColumnMax) << ','
+        << Format("%.6e", r.smoothestRowMax) << ',' << Format("%.6e", r.maxBound) << ','
+        << Format("%.4f", r.withinBound) << '\n';
+  }
+  return out.str();
+}
+
+std::string ReportMarkdown(const ReportSettings &s, const std::vector<ReportRow> &rows) {
+  std::ostringstream out;
+  out << "# lutbake report\n\n"
+      << "lutbake " << LutbakeVersion() << "; NDF " << ToString(s.ndf) << ", Smith "
+      << ToString(s.smith) << "; tables " << s.size << " texels per axis; budget "
+      << s.budgetSeconds << " s in total; " << std::thread::hardware_concurrency()
+      << " hardware threads.\n\n"
+      << "Real error of every texel against the quadrature at 1e-12 (E_avg: 1e-11). "
+         "Sampled estimators: 4 replicates; samples per texel as listed. The two quadratures "
+         "(quadrature: the default panel rule; adaptive: nested adaptive Gauss-Kronrod): "
+         "integrand evaluations per texel at the tolerance listed.\n\n";
+  for (TableKind kind : s.tables) {
+    out << "## " << TableName(kind) << "\n\n### Time to reach a max error\n\n"
+        << "| estimator | 1e-3 | 1e-4 | 1e-5 | 1e-6 | best max error (time) |\n"
+        << "|---|---|---|---|---|---|\n";
+    for (Estimator e : s.estimators) {
+      out << "| " << ToString(e);
+      double best = INFINITY, bestTime = 0;
+      for (double threshold : {1e-3, 1e-4, 1e-5, 1e-6}) {
+        std::string cell = "not reached";
+        for (const ReportRow &r : rows)
+          if (r.table == kind && r.estimator == e && r.maxError <= threshold) {
+            cell = Format("%.3g s", r.seconds);
+            break;
+          }
+        out << " | " << cell;
+      }
+      for (const ReportRow &r : rows)
+        if (r.table == kind && r.estimator == e && r.maxError < best) {
+          best = r.maxError;
+          bestTime = r.seconds;
+        }
+      out << " | "
+          << (std::isfinite(best) ? Format("%.2e", best) + Format(" (%.3g s)", bestTime)
+                                  : std::string("none"))
+          << " |\n";
+    }
+    out << "\n\"not reached\": not within this report's budget.\n\n### All runs\n\n"
+        << "| estimator | samples (quadrature: evaluations) per texel | tolerance | seconds | "
+           "max error | RMS error | grazing column max | smoothest row max | max bound | "
+           "within bound |\n|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const ReportRow &r : rows) {
+      if (r.table != kind) continue;
+      out << "| " << ToString(r.estimator) << " | " << Format("%.0f", r.samplesPerTexel) << " | "
+          << (r.tolerance > 0 ? Format("%.0e", r.tolerance) : "") << " | "
+          << Format("%.3g", r.seconds) << " | " << Format("%.2e", r.maxError) << " | "
+          << Format("%.2e", r.rmsError) << " | " << Format("%.2e", r.grazingColumnMax) << " | "
+          << Format("%.2e", r.smoothestRowMax) << " | " << Format("%.2e", r.maxBound) << " | "
+          << Format("%.1f%%", 100.0 * r.withinBound) << " |\n";
+    }
+    out << "\n";
+  }
+  return out.str();
+}
+
+std::string ReportSvg(const ReportSettings &s, const std::vector<ReportRow> &rows) {
+  constexpr double kPanelWidth = 520, kPanelHeight = 400;
+  constexpr double kLeft = 70, kRight = 150, kTop = 40, kBottom = 50;
+  static const char *kColours[] = {"#7f7f7f", "#bcbd22", "#ff7f0e", "#9467bd",
+                                   "#1f77b4", "#2ca02c", "#d62728"};
+  std::ostringstream out;
+  const double width = kPanelWidth * static_cast<double>(s.tables.size());
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\""
+      << kPanelHeight << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  for (size_t p = 0; p < s.tables.size(); ++p) {
+    const TableKind kind = s.tables[p];
+    const double x0 = kPanelWidth * static_cast<double>(p) + kLeft;
+    const double plotW = kPanelWidth - kLeft - kRight, plotH = kPanelHeight - kTop - kBottom;
+    // Decade-aligned log ranges over this table's rows.
+    double tMin = INFINITY, tMax = 0, eMin = INFINITY, eMax = 0;
+    for (const ReportRow &r : rows)
+      if (r.table == kind) {
+        tMin = std::min(tMin, std::max(r.seconds, 1e-4));
+        tMax = std::max(tMax, std::max(r.seconds, 1e-4));
+        eMin = std::min(eMin, std::max(r.maxError, 1e-10));
+        eMax = std::max(eMax, std::max(r.maxError, 1e-10));
+      }
+    if (!(tMax > 0)) continue;
+    const double lt0 = std::floor(std::log10(tMin)),
+                 lt1 = std::max(lt0 + 1, std::ceil(std::log10(tMax)));
+    const double le0 = std::floor(std::log10(eMin)),
+                 le1 = std::max(le0 + 1, std::ceil(std::log10(eMax)));
+    const auto X = [&](double t) {
+      return x0 + plotW * (std::log10(std::max(t, 1e-4)) - lt0) / (lt1 - lt0);
+    };
+    const auto Y = [&](double e) {
+      return kTop + plotH * (le1 - std::log10(std::max(e, 1e-10))) / (le1 - le0);
+    };
+    out << "<text x=\"" << x0 + plotW / 2 << "\" y=\"20\" text-anchor=\"middle\" "
+        << "font-size=\"14\">" << TableName(kind) << " (" << ToString(s.ndf) << ", " << s.size
+        << "x" << (kind == TableKind::kEavg ? 1 : s.size) << "): max error against time</text>\n"
+        << "<rect x=\"" << x0 << "\" y=\"" << kTop << "\" width=\"" << plotW << "\" height=\""
+        << plotH << "\" fill=\"none\" stroke=\"black\"/>\n";
+    for (double d = lt0; d <= lt1; d += 1) {
+      const double x = X(std::pow(10.0, d));
+      out << "<line x1=\"" << x << "\" y1=\"" << kTop << "\" x2=\"" << x << "\" y2=\""
+          << kTop + plotH << "\" stroke=\"#dddddd\"/>\n<text x=\"" << x << "\" y=\""
+          << kTop + plotH + 16 << "\" text-anchor=\"middle\">1e" << d << "</text>\n";
+    }
+    for (double d = le0; d <= le1; d += 1) {
+      const double y = Y(std::pow(10.0, d));
+      out << "<line x1=\"" << x0 << "\" y1=\"" << y << "\" x2=\"" << x0 + plotW << "\" y2=\"" << y
+          << "\" stroke=\"#dddddd\"/>\n<text x=\"" << x0 - 6 << "\" y=\"" << y + 4
+          << "\" text-anchor=\"end\">1e" << d << "</text>\n";
+    }
+    out << "<text x=\"" << x0 + plotW / 2 << "\" y=\"" << kPanelHeight - 12
+        << "\" text-anchor=\"middle\">wall time of the bake (s)</text>\n"
+        << "<text transform=\"translate(" << x0 - 50 << "," << kTop + plotH / 2
+        << ") rotate(-90)\" text-anchor=\"middle\">max real error</text>\n";
+    int legend = 0;
+    for (size_t k = 0; k < std::size(kAllEstimators); ++k) {
+      const Estimator e = kAllEstimators[k];
+      std::string points;
+      for (const ReportRow &r : rows)
+        if (r.table == kind && r.estimator == e)
+          points += Format("%.1f,", X(r.seconds)) + Format("%.1f ", Y(r.maxError));
+      if (points.empty()) continue;
+      const char *colour = kColours[k % std::size(kColours)];
+      out << "<polyline points=\"" << points << "\" fill=\"none\" stroke=\"" << colour
+          << "\" stroke-width=\"2\"/>\n";
+      const double ly = kTop + 10 + 18 * legend++;
+      out << "<line x1=\"" << x0 + plotW + 10 << "\" y1=\"" << ly << "\" x2=\"" << x0 + plotW + 30
+          << "\" y2=\"" << ly << "\" stroke=\"" << colour << "\" stroke-width=\"2\"/>\n<text x=\""
+          << x0 + plotW + 35 << "\" y=\"" << ly + 4 << "\">" << ToString(e) << "</text>\n";
+    }
+  }
+  out << "</svg>\n";
+  return out.str();
+}
+
+}  // namespace lutbake

@@ -1,0 +1,92 @@
+// Manifest reading: the documented keys, and every kind of mistake refused
+// with the file, the JSON pointer and what is accepted.
+#include "lutbake/plans/manifest.h"
+
+#include <gtest/gtest.h>
+
+namespace lutbake {
+namespace {
+
+const std::string kPlans = std::string(LUTBAKE_TEST_DATA) + "/plans/";
+
+std::string ErrorOf(const std::string &text) {
+  try {
+    ParseManifest(text, "inline.json");
+  } catch (const InputError &e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Manifest, ReadsMaterialsAndLighting) {
+  const Manifest m = ReadManifest(kPlans + "dielectric.json");
+  EXPECT_EQ(m.ibl, std::optional<bool>(true));
+  EXPECT_EQ(m.compensation, std::optional<bool>(true));
+  ASSERT_EQ(m.materials.size(), 4u);
+  const MaterialSpec &water = m.materials[0];
+  EXPECT_EQ(water.name, "water");
+  ASSERT_EQ(water.roughness.size(), 2u);  // a list: two exact uses
+  EXPECT_EQ(water.roughness[0].min, 0.1);
+  EXPECT_EQ(water.roughness[1].max, 0.3);
+  EXPECT_EQ(water.fresnel.model, FresnelModel::kDielectric);
+  EXPECT_EQ(water.fresnel.eta.values, std::vector<double>{1.33});
+  const MaterialSpec &gold = m.materials[2];
+  EXPECT_EQ(gold.roughness.at(0).min, 0.2);  // a range
+  EXPECT_EQ(gold.roughness.at(0).max, 0.4);
+  EXPECT_EQ(gold.fresnel.model, FresnelModel::kConductor);
+  EXPECT_EQ(gold.fresnel.k.values, std::vector<double>{2.83});
+  EXPECT_EQ(gold.ibl, std::optional<bool>(false));
+  EXPECT_FALSE(gold.compensation.has_value());
+  EXPECT_EQ(m.materials[3].compensation, std::optional<bool>(false));
+
+  const Manifest models = ReadManifest(kPlans + "models.json");
+  EXPECT_EQ(models.materials.at(1).ndf, NdfKind::kBeckmann);
+  EXPECT_EQ(models.materials.at(2).smith, SmithForm::kSeparable);
+  EXPECT_FALSE(models.ibl.has_value());
+}
+
+TEST(Manifest, MistakesNameTheirPlace) {
+  const auto has = [](const std::string &message, const std::string &fragment) {
+    EXPECT_NE(message.find(fragment), std::string::npos) << message;
+  };
+  has(ErrorOf(R"({"materials": [{"roughness": 0.5, "roughnes": 0.4}]})"),
+      "inline.json: /materials/0/roughnes: unknown key \"roughnes\"; accepted here: name");
+  has(ErrorOf(R"({"lighting": {"ibl": "yes"}})"), "/lighting/ibl: expected true or false");
+  has(ErrorOf(R"({"lighting": {"shadows": true}})"), "/lighting/shadows: unknown key");
+  has(ErrorOf(R"({"scenes": []})"), "/scenes: unknown key");
+  has(ErrorOf(R"({"materials": [{"name": "x"}]})"), "/materials/0: no \"roughness\"");
+  has(ErrorOf(R"({"materials": [{"roughness": 7}]})"), "/materials/0/roughness: 7 is outside");
+  has(ErrorOf(R"({"materials": [{"roughness": [0.1, "a"]}]})"),
+      "/materials/0/roughness/1: expected a number");
+  has(ErrorOf(R"({"materials": [{"roughness": []}]})"), "an empty list");
+  has(ErrorOf(R"({"materials": [{"roughness": {"min": 0.1}}]})"), "both \"min\" and \"max\"");
+  has(ErrorOf(R"({"materials": [{"roughness": 0.1, "ndf": "phong"}]})"),
+      "/materials/0/ndf: \"phong\" is not an NDF; accepted: ggx, beckmann");
+  has(ErrorOf(R"({"materials": [{"roughness": 0.1, "smith": "uncorrelated"}]})"),
+      "accepted: correlated, separable");
+  has(ErrorOf(R"({"materials": [{"roughness": 0.1, "fresnel": {"model": "cook"}}]})"),
+      "/materials/0/fresnel/model");
+  has(ErrorOf(R"({"materials": [{"roughness": 0.1, "fresnel": {"model": "dielectric"}}]})"),
+      "a dielectric needs \"eta\"");
+  has(ErrorOf(
+          R"({"materials": [{"roughness": 0.1, "fresnel": {"model": "conductor", "eta": 1}}]})"),
+      "a conductor needs");
+  has(ErrorOf(R"({"materials": [{"roughness": 0.1, "fresnel": {"model": "schlick", "eta": 1}}]})"),
+      "/materials/0/fresnel/eta: unknown key");
+  has(ErrorOf(R"([1, 2])"), "expected an object");
+  has(ErrorOf("{\n  \"materials\": [\n    {\"roughness\": 0.1,}\n  ]\n}"), "line 3");
+  has(ErrorOf(R"({"materials": [{"roughness": NaN}]})"), "malformed JSON");
+  // An unlit material needs no roughness.
+  EXPECT_EQ(ErrorOf(R"({"materials": [{"name": "ui", "unlit": true}]})"), "");
+
+  try {
+    ReadManifest(kPlans + "bad_key.json");
+    ADD_FAILURE() << "bad_key.json was accepted";
+  } catch (const InputError &e) {
+    has(e.what(), "bad_key.json: /materials/0/roughnes");
+  }
+  EXPECT_THROW(ReadManifest(kPlans + "missing.json"), InputError);
+}
+
+}  // namespace
+}  // namespace lutbake

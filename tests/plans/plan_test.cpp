@@ -1,0 +1,468 @@
+// Bake plans: each rule of plan.h on the test scenes and manifests, the
+// narrowed and listed tables against the full tables and the quadrature,
+// and `lutbake plan` / `lutbake bake --scene` end to end.
+#include "lutbake/plans/plan.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "lutbake/formats/binary_format.h"
+#include "lutbake/formats/table_reader.h"
+#include "lutbake/formats/writer.h"
+#include "lutbake/plans/manifest.h"
+#include "lutbake/plans/scene.h"
+#include "support/cli_run.h"
+
+namespace lutbake {
+namespace {
+
+namespace fs = std::filesystem;
+using test::Lutbake;
+using test::Scratch;
+
+const std::string kPlans = std::string(LUTBAKE_TEST_DATA) + "/plans/";
+const std::string kScenes = std::string(LUTBAKE_TEST_DATA) + "/scenes/";
+
+BakePlan PlanOf(const std::vector<std::string> &scenes, const PlanOptions &options = {}) {
+  std::vector<MaterialSpec> all;
+  for (const std::string &s : scenes) {
+    const auto ms = ReadSceneMaterials(s);
+    all.insert(all.end(), ms.begin(), ms.end());
+  }
+  return MakePlan(all, options);
+}
+
+const PlannedTable *Find(const BakePlan &plan, const std::string &name) {
+  for (const PlannedTable &t : plan.tables)
+    if (t.name == name) return &t;
+  return nullptr;
+}
+
+std::string Omitted(const BakePlan &plan, const std::string &name) {
+  for (const OmittedTable &o : plan.omitted)
+    if (o.name == name) return o.reason;
+  return "";
+}
+
+TEST(Plan, FewExactRoughnessValuesGetListedRows) {
+  const BakePlan plan = PlanOf({kPlans + "listed.gltf"});
+  ASSERT_EQ(plan.tables.size(), 3u);
+  for (const char *name : {"E", "Eavg", "dfg"}) {
+    const PlannedTable *t = Find(plan, name);
+    ASSERT_NE(t, nullptr) << name;
+    EXPECT_EQ(t->roughness.values, (std::vector<double>{0.25, 0.5})) << name;
+    const Axis &r = t->kind == TableKind::kEavg ? t->x : t->y;
+    EXPECT_TRUE(r.listed());
+    EXPECT_EQ(r.TexelCenter(0), 0.25);
+    EXPECT_EQ(r.TexelCenter(1), 0.5);
+    // The unlit material needs nothing.
+    EXPECT_EQ(t->materials, (std::vector<std::string>{"paint", "steel", "steel copy"}));
+  }
+  EXPECT_EQ(Find(plan, "dfg")->x.count, 128);
+  EXPECT_EQ(Find(plan, "E")->x.count, 32);
+  EXPECT_NE(Omitted(plan, "Favg").find("20/21 F0 + 1/21 F90"), std::string::npos);
+  EXPECT_TRUE(plan.schlickFavgFunction);
+  EXPECT_TRUE(plan.unsupported.empty());
+}
+
+TEST(Plan, TexturesNarrowToZeroToFactorKeepingTheTexelSpacing) {
+  const BakePlan plan = PlanOf({kPlans + "textured.gltf"});
+  const PlannedTable *e = Find(plan, "E");
+  ASSERT_NE(e, nullptr);
+  EXPECT_TRUE(e->roughness.values.empty());
+  EXPECT_EQ(e->roughness.min, 0.0);
+  EXPECT_EQ(e->roughness.max, 0.5);
+  EXPECT_FALSE(e->y.listed());
+  EXPECT_EQ(e->y.min, 0.0);
+  EXPECT_EQ(e->y.max, 0.5);
+  EXPECT_EQ(e->y.count, 16);                  // half of 32
+  EXPECT_EQ(Find(plan, "dfg")->y.count, 64);  // half of 128
+  EXPECT_EQ(Find(plan, "Eavg")->x.count, 16);
+}
+
+TEST(Plan, ClearcoatAndManyValues) {
+  // Base 0.4, coat 0.1 and a textured coat [0, 0.2]: the hull [0, 0.4].
+  const BakePlan coat = PlanOf({kPlans + "clearcoat.gltf"});
+  EXPECT_EQ(Find(coat, "E")->roughness.min, 0.0);
+  EXPECT_EQ(Find(coat, "E")->roughness.max, 0.4);
+  // More distinct exact values than kMaxListedRoughness: a linear hull.
+  std::vector<MaterialSpec> many;
+  for (int i = 0; i <= kMaxListedRoughness; ++i) {
+    MaterialSpec m;
+    m.name = "m" + std::to_string(i);
+    const double r = 0.2 + 0.01 * i;
+    m.roughness.push_back({"base", r, r});
+    many.push_back(m);
+  }
+  const BakePlan hull = MakePlan(many, {});
+  EXPECT_TRUE(Find(hull, "E")->roughness.values.empty());
+  EXPECT_EQ(Find(hull, "E")->y.min, 0.2);
+  EXPECT_FALSE(Find(hull, "E")->y.listed());
+  many.pop_back();
+  EXPECT_EQ(Find(MakePlan(many, {}), "E")->roughness.values.size(),
+            static_cast<size_t>(kMaxListedRoughness));
+}
+
+TEST(Plan, LightingSwitchesTablesOff) {
+  PlanOptions noIbl;
+  noIbl.ibl = false;
+  const BakePlan a = PlanOf({kPlans + "listed.gltf"}, noIbl);
+  EXPECT_EQ(Find(a, "dfg"), nullptr);
+  EXPECT_NE(Omitted(a, "dfg").find("--no-ibl"), std::string::npos);
+  ASSERT_NE(Find(a, "E"), nullptr);
+
+  PlanOptions noCompensation;
+  noCompensation.compensation = false;
+  const BakePlan b = PlanOf({kPlans + "listed.gltf"}, noCompensation);
+  ASSERT_EQ(b.tables.size(), 1u);
+  EXPECT_EQ(b.tables[0].name, "dfg");
+  EXPECT_NE(Omitted(b, "E").find("--no-compensation"), std::string::npos);
+  EXPECT_NE(Omitted(b, "Eavg").find("--no-compensation"), std::string::npos);
+  EXPECT_FALSE(Omitted(b, "Favg").empty());
+  EXPECT_FALSE(b.schlickFavgFunction);
+
+  // The manifest's lighting, as lutbake plan applies it.
+  const Manifest m = ReadManifest(kPlans + "no_ibl.json");
+  PlanOptions fromManifest;
+  fromManifest.defaultIbl = m.ibl;
+  const BakePlan c = PlanOf({kPlans + "listed.gltf"}, fromManifest);
+  EXPECT_EQ(Find(c, "dfg"), nullptr);
+  EXPECT_NE(Omitted(c, "dfg").find("manifest"), std::string::npos);
+}
+
+TEST(Plan, NothingNeededIsSaidSo) {
+  for (const char *scene : {"unlit.gltf", "no_lobe.gltf"}) {
+    const BakePlan plan = PlanOf({kPlans + scene});
+    EXPECT_TRUE(plan.empty()) << scene;
+    EXPECT_EQ(plan.omitted.size(), 4u) << scene;
+    EXPECT_NE(Omitted(plan, "E").find("unlit or has no specular lobe"), std::string::npos);
+  }
+}
+
+TEST(Plan, OtherFresnelModelsGetTablesOverTheirIors) {
+  const Manifest m = ReadManifest(kPlans + "dielectric.json");
+  PlanOptions options;
+  options.defaultIbl = m.ibl;
+  options.defaultCompensation = m.compensation;
+  const BakePlan plan = MakePlan(m.materials, options);
+  const PlannedTable *dielectric = Find(plan, "Favg_dielectric");
+  const PlannedTable *conductor = Find(plan, "Favg_conductor");
+  ASSERT_NE(dielectric, nullptr);
+  ASSERT_NE(conductor, nullptr);
+  EXPECT_EQ(dielectric->x.nodes, (std::vector<double>{1.33, 1.5}));
+  EXPECT_EQ(dielectric->materials, (std::vector<std::string>{"water", "glass"}));
+  EXPECT_EQ(conductor->x.nodes, std::vector<double>{0.47});
+  EXPECT_EQ(conductor->y.nodes, std::vector<double>{2.83});
+  // gold has ibl false; plastic has compensation false.
+  EXPECT_EQ(Find(plan, "dfg")->roughness.values, (std::vector<double>{0.1, 0.3, 0.5}));
+  EXPECT_EQ(Find(plan, "E")->roughness.min, 0.1);
+  EXPECT_EQ(Find(plan, "E")->roughness.max, 0.4);
+  EXPECT_EQ(Find(plan, "E")->materials, (std::vector<std::string>{"water", "glass", "gold"}));
+  EXPECT_FALSE(plan.schlickFavgFunction);
+}
+
+TEST(Plan, VariantsOfOneTableGetSuffixes) {
+  const Manifest m = ReadManifest(kPlans + "models.json");
+  const BakePlan plan = MakePlan(m.materials, {});
+  for (const char *name : {"E", "Eavg", "dfg", "E_beckmann", "Eavg_beckmann", "dfg_beckmann",
+                           "E_separable", "Eavg_separable", "dfg_separable"})
+    EXPECT_NE(Find(plan, name), nullptr) << name;
+  EXPECT_EQ(Find(plan, "E_beckmann")->ndf, NdfKind::kBeckmann);
+  EXPECT_EQ(Find(plan, "E_separable")->smith, SmithForm::kSeparable);
+  EXPECT_EQ(Find(plan, "E")->roughness.values, std::vector<double>{0.6});
+  // One variant alone keeps the plain name.
+  std::vector<MaterialSpec> beckmannOnly{m.materials[1]};
+  EXPECT_EQ(MakePlan(beckmannOnly, {}).tables.at(0).name, "E");
+}
+
+TEST(Plan, UnsupportedFeaturesAreListedAndTheRestPlanned) {
+  const BakePlan plan = PlanOf({kPlans + "unsupported.gltf"});
+  ASSERT_EQ(plan.unsupported.size(), 5u);
+  EXPECT_EQ(plan.unsupported[0].material, "velvet");
+  EXPECT_EQ(plan.unsupported[0].feature, "KHR_materials_sheen");
+  EXPECT_EQ(Find(plan, "E")->roughness.values, (std::vector<double>{0.0, 0.05, 0.1, 0.35, 0.8}));
+}
+
+TEST(Plan, SeveralScenesAreTheirUnion) {
+  const BakePlan plan = PlanOf({kPlans + "listed.gltf", kPlans + "textured.gltf"});
+  // {0.25, 0.5} and [0, 0.5] with 0.3: the hull [0, 0.5].
+  EXPECT_EQ(Find(plan, "E")->roughness.min, 0.0);
+  EXPECT_EQ(Find(plan, "E")->roughness.max, 0.5);
+  EXPECT_EQ(Find(plan, "E")->materials.size(), 5u);
+}
+
+// A narrowed axis [0, 0.5] with half the rows puts its texel centres on the
+// full table's rows 0..N/2-1 exactly (0.5 (i + 0.5) / 16 = (i + 0.5) / 32 in
+// binary floating point), and each texel is seeded from its coordinates: the
+// narrowed table must equal the full one there, bit for bit, sampled.
+TEST(PlanBake, NarrowedTableEqualsTheFullTableOnSharedTexels) {
+  const BakePlan plan = PlanOf({kPlans + "textured.gltf"}, [] {
+    PlanOptions o;
+    o.sizeDfg = 16;
+    return o;
+  }());
+  BakeSettings s;
+  s.samples = 1024;
+  s.sizeE = s.sizeEavg = 32;
+  s.sizeDfg = 16;
+  for (const PlannedTable &t : plan.tables) {
+    const Table narrow = BakeTableOn(t.kind, PlannedSettings(t, s), t.x, t.y);
+    const Table full = BakeTable(t.kind, s);
+    const bool average = t.kind == TableKind::kEavg;
+    const int rows = average ? narrow.width() : narrow.height();
+    ASSERT_EQ(rows * 2, average ? full.width() : full.height()) << t.name;
+    for (int r = 0; r < rows; ++r)
+      for (int x = 0; x < (average ? 1 : narrow.width()); ++x)
+        for (int c = 0; c < narrow.channels; ++c) {
+          const size_t a = average ? narrow.index(r, 0, c) : narrow.index(x, r, c);
+          const size_t b = average ? full.index(r, 0, c) : full.index(x, r, c);
+          ASSERT_EQ(narrow.values[a], full.values[b]) << t.name << " row " << r << " x " << x;
+          ASSERT_EQ(narrow.errors[a], full.errors[b]);
+        }
+  }
+}
+
+// Listed rows sit at exactly the materials' roughness: each texel against
+// the quadrature at that (mu, r), within its own bound and the quadrature's.
+TEST(PlanBake, ListedRowsMatchTheQuadratureWithinTheirBounds) {
+  const BakePlan plan = PlanOf({kPlans + "listed.gltf"}, [] {
+    PlanOptions o;
+    o.sizeDfg = 16;
+    o.sizeE = 16;
+    return o;
+  }());
+  BakeSettings s;
+  s.samples = 4096;
+  s.sizeDfg = s.sizeE = 16;
+  BakeSettings reference = s;
+  reference.estimator = Estimator::kQuadrature;
+  for (const PlannedTable &t : plan.tables) {
+    const Table table = BakeTableOn(t.kind, PlannedSettings(t, s), t.x, t.y);
+    double worst = 0.0;
+    for (int y = 0; y < table.height(); ++y)
+      for (int x = 0; x < table.width(); ++x) {
+        PointValue truth;
+        if (t.kind == TableKind::kEavg) {
+          const double r = table.x.TexelCenter(x);
+          truth = EvaluateAlbedoAverage(reference, r * r, 0);
+        } else {
+          const double r = table.y.TexelCenter(y);
+          truth = EvaluateAlbedo(t.kind, reference, table.x.TexelCenter(x), r * r, 0);
+        }
+        for (int c = 0; c < table.channels; ++c) {
+          const size_t i = table.index(x, y, c);
+          const double diff = std::abs(table.values[i] - truth.value[c]);
+          worst = std::max(worst, diff);
+          // Each texel's 99% bound; the few texels that may exceed it are
+          // not expected at this size (checked loosely: 2x).
+          EXPECT_LE(diff, 2.0 * table.errors[i] + truth.error[c]) << t.name << " " << x << "," << y;
+        }
+      }
+    EXPECT_LE(worst, table.MaxError() + 1e-9) << t.name;
+  }
+}
+
+TEST(PlanCli, JsonHasTheDocumentedShape) {
+  const auto r = Lutbake("plan --json --scene " + kPlans + "listed.gltf " + kPlans +
+                             "unsupported.gltf --manifest " + kPlans + "no_ibl.json",
+                         true);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto j = nlohmann::json::parse(r.output);
+  ASSERT_TRUE(j["tables"].is_array());
+  ASSERT_EQ(j["tables"].size(), 2u);
+  EXPECT_EQ(j["tables"][0]["name"], "E");
+  EXPECT_EQ(j["tables"][0]["roughness"]["min"], 0.0);
+  EXPECT_EQ(j["tables"][0]["roughness"]["max"], 0.8);
+  EXPECT_EQ(j["tables"][0]["roughness"]["values"],
+            (std::vector<double>{0.0, 0.05, 0.1, 0.25, 0.35, 0.5, 0.8}));
+  EXPECT_EQ(j["tables"][1]["name"], "Eavg");
+  EXPECT_TRUE(j["tables"][0]["materials"].is_array());
+  std::vector<std::string> omitted;
+  for (const auto &o : j["omitted"]) {
+    omitted.push_back(o["name"]);
+    EXPECT_FALSE(o["reason"].get<std::string>().empty());
+  }
+  EXPECT_EQ(omitted, (std::vector<std::string>{"Favg", "dfg"}));
+  ASSERT_EQ(j["unsupported"].size(), 5u);
+  EXPECT_EQ(j["unsupported"][1]["material"], "glass");
+  EXPECT_EQ(j["unsupported"][1]["feature"], "KHR_materials_transmission");
+  // Per-material Schlick constants: F_avg = 20/21 F0 + 1/21 F90 with glTF's F0 = 0.04.
+  const auto &paint = j["materials"][0];
+  EXPECT_EQ(paint["name"], "paint");
+  EXPECT_NEAR(paint["Favg"][0].get<double>(), 0.04 * 20.0 / 21.0 + 1.0 / 21.0, 1e-16);
+
+  const auto human = Lutbake("plan --scene " + kPlans + "textured.gltf");
+  EXPECT_EQ(human.status, 0);
+  EXPECT_NE(human.output.find("perceptualRoughness linear [0, 0.5] (16 texels)"), std::string::npos)
+      << human.output;
+  EXPECT_NE(human.output.find("left out:"), std::string::npos);
+}
+
+TEST(PlanCli, BakeWritesExactlyThePlanAndChecks) {
+  const fs::path out = Scratch("plan_bake");
+  const auto r = Lutbake("bake --out " + out.string() + " --scene " + kPlans +
+                         "listed.glb --size 16 --samples 4096");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(test::FileNames(out),
+            (std::vector<std::string>{"E.bin", "E.exr", "E.h", "Eavg.bin", "Eavg.exr", "Eavg.h",
+                                      "Favg.h", "dfg.bin", "dfg.exr", "dfg.h", "kulla_conty.h"}));
+  const Table e = ReadExrTable((out / "E.exr").string());
+  EXPECT_TRUE(e.y.listed());
+  EXPECT_EQ(e.y.nodes, (std::vector<double>{0.25, 0.5}));
+  ASSERT_NE(e.FindMetadata("planMaterials"), nullptr);
+  EXPECT_EQ(*e.FindMetadata("planMaterials"), "paint, steel, steel copy");
+  const Table bin = ReadBinaryTable((out / "dfg.bin").string());
+  EXPECT_EQ(bin.y.nodes, (std::vector<double>{0.25, 0.5}));
+  // lutbake check reads the listed axes and passes the set.
+  const auto check = Lutbake("check " + out.string() + " --points 64 --furnace-grid 33");
+  EXPECT_EQ(check.status, 0) << check.output;
+  EXPECT_NE(check.output.find("closed form"), std::string::npos);
+
+  // The headers: lookups take the roughness a shader has; at a listed value
+  // (as a float) they return that row exactly; Favg.h is the closed form.
+  std::string checks;
+  char line[256];
+  for (int y = 0; y < e.height(); ++y)
+    for (int x = 0; x < e.width(); ++x) {
+      std::snprintf(line, sizeof line, "  fail += lutbake_luts::lookup_E(%.9gf, %.9gf) != %.9gf;\n",
+                    static_cast<float>(e.x.TexelCenter(x)), static_cast<float>(e.y.nodes[y]),
+                    static_cast<float>(e.value(x, y)));
+      checks += line;
+    }
+  // Halfway between the rows: the average of the rows (linear in r).
+  std::snprintf(line, sizeof line,
+                "  fail += std::fabs(lutbake_luts::lookup_E(%.9gf, 0.375f) - %.9gf) > 1e-6f;\n",
+                static_cast<float>(e.x.TexelCenter(3)), 0.5 * (e.value(3, 0) + e.value(3, 1)));
+  checks += line;
+  checks += "  fail += lutbake_luts::lookup_E(0.5f, 0.9f) != lutbake_luts::lookup_E(0.5f, 0.5f);\n";
+  checks +=
+      "  fail += std::fabs(lutbake_luts::lookup_Favg(0.04f) - (0.04f * 20.0f + 1.0f) / "
+      "21.0f) > 1e-7f;\n";
+  std::ofstream(out / "main.cpp")
+      << "#include <cmath>\n#include <cstdio>\n#include \"E.h\"\n"
+         "#include \"Eavg.h\"\n#include \"Favg.h\"\n#include \"dfg.h\"\n"
+         "int main() {\n  int fail = 0;\n"
+      << checks
+      << "  std::printf(\"%d failures\\n\", fail);\n"
+         "  return fail == 0 ? 0 : 1;\n}\n";
+  LUTBAKE_EXPECT_COMPILES_AND_RUNS(out, "c++17");
+  fs::remove_all(out);
+}
+
+// Two manifests needing GGX, Beckmann and separable variants and both
+// exact Fresnel models: every variant is written under its own name, lutbake
+// check checks each set, and all headers compile together in one program.
+TEST(PlanCli, VariantsBakeCheckAndCompileTogether) {
+  const fs::path out = Scratch("plan_variants");
+  const auto r = Lutbake("bake --out " + out.string() + " --manifest " + kPlans + "models.json " +
+                         kPlans + "dielectric.json --size 8 --tolerance 1e-5");
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::string includes;
+  size_t headers = 0;
+  for (const auto &e : fs::directory_iterator(out))
+    if (e.path().extension() == ".h") {
+      includes += "#include \"" + e.path().filename().string() + "\"\n";
+      ++headers;
+    }
+  // 3 x (E, Eavg, dfg, kulla_conty) + Favg_dielectric + Favg_conductor
+  EXPECT_EQ(headers, 14u);
+  const auto check = Lutbake("check " + out.string() + " --points 16 --furnace-grid 17");
+  EXPECT_EQ(check.status, 0) << check.output;
+  for (const char *subject : {"E_beckmann", "dfg_separable", "Favg_conductor", "E+Eavg_beckmann"})
+    EXPECT_NE(check.output.find(subject), std::string::npos) << subject << "\n" << check.output;
+  std::ofstream(out / "main.cpp")
+      << includes
+      << "int main() {\n"
+         "  const float a = lutbake_luts::lookup_E_beckmann(0.5f, 0.3f);\n"
+         "  const float b = lutbake_luts::lookup_dfg_separable(0.5f, 0.2f)[0];\n"
+         "  const float c = lutbake_luts::lookup_Favg_dielectric(1.5f);\n"
+         "  const float d = lutbake_luts::lookup_Favg_conductor(0.47f, 2.83f);\n"
+         "  const float e = lutbake_luts::f_ms_beckmann(0.5f, 0.5f, 0.3f);\n"
+         "  return a > 0.0f && b > 0.0f && c > 0.0f && d > 0.0f && e > 0.0f ? 0 : 1;\n}\n";
+  LUTBAKE_EXPECT_COMPILES_AND_RUNS(out, "c++17");
+  fs::remove_all(out);
+}
+
+// --tables with a scene selects among the planned tables (what
+// lutbake_add_luts(TABLES ... SCENE ...) passes), and a table the plan
+// leaves out stops the bake with the plan's reason and writes nothing.
+TEST(PlanCli, TablesSelectAmongThePlannedOnes) {
+  const fs::path out = Scratch("plan_tables");
+  const auto r = Lutbake("bake --out " + out.string() + " --scene " + kPlans +
+                         "listed.gltf --tables E,Eavg --format header --size 8 --samples 256");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(test::FileNames(out), (std::vector<std::string>{"E.h", "Eavg.h", "kulla_conty.h"}));
+  const HeaderValues e = ReadHeaderValues((out / "E.h").string());
+  EXPECT_EQ(e.height, 2);  // the scene's two listed roughness values
+  fs::remove_all(out);
+
+  const auto refused = Lutbake("bake --out " + out.string() + " --scene " + kPlans +
+                               "listed.gltf --no-ibl --tables E,dfg --size 8 --samples 256");
+  EXPECT_EQ(refused.status, 1) << refused.output;
+  EXPECT_NE(refused.output.find("  dfg: "), std::string::npos) << refused.output;
+  EXPECT_EQ(refused.output.find("  E: "), std::string::npos) << refused.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(PlanCli, UnsupportedStopsTheBakeUnlessSkipped) {
+  const fs::path out = Scratch("plan_unsupported");
+  const auto stop = Lutbake("bake --out " + out.string() + " --scene " + kPlans +
+                            "unsupported.gltf --size 4 --samples 64");
+  EXPECT_EQ(stop.status, 1);
+  EXPECT_NE(stop.output.find("velvet: KHR_materials_sheen"), std::string::npos) << stop.output;
+  EXPECT_FALSE(fs::exists(out));
+  const auto skip =
+      Lutbake("bake --out " + out.string() + " --scene " + kPlans +
+              "unsupported.gltf --size 4 --samples 64 --skip-unsupported --format exr");
+  EXPECT_EQ(skip.status, 0) << skip.output;
+  EXPECT_TRUE(fs::exists(out / "E.exr"));
+  fs::remove_all(out);
+}
+
+TEST(PlanCli, NothingNeededBakesNothing) {
+  const fs::path out = Scratch("plan_nothing");
+  const auto r = Lutbake("bake --out " + out.string() + " --scene " + kPlans + "unlit.gltf");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("needs no tables"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(PlanCli, BadInputExitsWithoutOutput) {
+  const fs::path out = Scratch("plan_bad");
+  const std::string bake = "bake --out " + out.string() + " ";
+  struct Case {
+    std::string args;
+    int status;
+    std::string says;
+  };
+  const Case cases[] = {
+      {"--scene " + kPlans + "missing.gltf", 2, "--scene " + kPlans + "missing.gltf: no such file"},
+      {"--manifest " + kPlans + "missing.json", 2, "no such file"},
+      {"--scene " + kPlans + "bad_roughness.gltf", 1,
+       "/materials/1/pbrMetallicRoughness/roughnessFactor: 7 is outside"},
+      {"--scene " + kPlans + "malformed.gltf", 1, "malformed JSON: parse error at line 3"},
+      {"--scene " + kPlans + "truncated.glb", 1, "truncated"},
+      {"--scene " + kPlans + "not_gltf.json", 1, "not a glTF file"},
+      {"--manifest " + kPlans + "bad_key.json", 1, "unknown key \"roughnes\""},
+      {"--scene " + kPlans + "listed.gltf --ndf beckmann", 2, "--ndf cannot be combined"},
+  };
+  for (const Case &c : cases) {
+    const auto r = Lutbake(bake + c.args);
+    EXPECT_EQ(r.status, c.status) << c.args << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.says), std::string::npos) << c.args << "\n" << r.output;
+    EXPECT_FALSE(fs::exists(out)) << c.args;
+    const auto plan = Lutbake("plan " + c.args);
+    if (c.args.find("--tables") == std::string::npos && c.args.find("--ndf") == std::string::npos) {
+      EXPECT_EQ(plan.status, c.status) << c.args;
+    }
+  }
+  EXPECT_EQ(Lutbake("plan").status, 2);
+}
+
+}  // namespace
+}  // namespace lutbake

@@ -1,0 +1,315 @@
+// `lutbake check`: passes on a good bake, fails with a reason on every kind
+// of tampering; the lookup it judges with, and the readers it uses.
+#include "lutbake/validation/check.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+
+#include "lutbake/formats/binary_format.h"
+#include "lutbake/formats/table_reader.h"
+#include "lutbake/formats/writer.h"
+#include "lutbake/tables/lookup.h"
+#include "support/cli_run.h"
+
+namespace lutbake {
+namespace {
+
+namespace fs = std::filesystem;
+using test::Lutbake;
+
+// A small complete set (sampled E, dfg, Eavg; Schlick Favg) baked once.
+const fs::path &GoodBake() {
+  static const fs::path dir = [] {
+    const fs::path d = test::Scratch("check_good");
+    const test::CommandResult run =
+        Lutbake("bake --out " + d.string() + " --size 8 --samples 4096 --error-map");
+    EXPECT_EQ(run.status, 0) << run.output;
+    return d;
+  }();
+  return dir;
+}
+
+fs::path CopyOfGood(const std::string &name) {
+  const fs::path d = test::Scratch(name);
+  fs::copy(GoodBake(), d, fs::copy_options::recursive);
+  return d;
+}
+
+CheckOptions Quick() {
+  CheckOptions o;
+  o.randomPoints = 32;
+  o.furnaceGrid = 65;
+  return o;
+}
+
+const CheckResult *Find(const CheckReport &r, const std::string &subject,
+                        const std::string &check) {
+  for (const CheckResult &c : r.results)
+    if (c.subject == subject && c.check == check) return &c;
+  return nullptr;
+}
+
+// Rewrites value `index` of a .bin file (float32 at the data offset).
+void PatchBin(const fs::path &path, size_t index, float value) {
+  std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
+  char offset[4];
+  f.seekg(12);
+  f.read(offset, 4);
+  uint32_t dataOffset;
+  std::memcpy(&dataOffset, offset, 4);
+  f.seekp(dataOffset + 4 * static_cast<std::streamoff>(index));
+  f.write(reinterpret_cast<const char *>(&value), 4);
+}
+
+float BinValue(const fs::path &path, size_t index) {
+  return static_cast<float>(ReadBinaryTable(path.string()).values[index]);
+}
+
+TEST(Check, PassesOnAGoodBake) {
+  const CheckReport r = CheckBakedSet(GoodBake().string(), Quick());
+  for (const CheckResult &c : r.results)
+    EXPECT_NE(c.status, CheckStatus::kFail) << c.subject << " " << c.check << ": " << c.detail;
+  EXPECT_TRUE(r.passed());
+  // Every check ran on the full set.
+  for (const auto &[subject, check] :
+       std::vector<std::pair<std::string, std::string>>{{"E", "metadata"},
+                                                        {"E", "formats"},
+                                                        {"E", "finite"},
+                                                        {"E", "range"},
+                                                        {"E", "texels"},
+                                                        {"E", "points"},
+                                                        {"dfg", "texels"},
+                                                        {"Eavg", "monotonic"},
+                                                        {"Favg", "closed form"},
+                                                        {"Favg", "monotonic"},
+                                                        {"E+dfg", "identity"},
+                                                        {"E+Eavg", "average"},
+                                                        {"E+Eavg", "furnace"}}) {
+    const CheckResult *c = Find(r, subject, check);
+    ASSERT_NE(c, nullptr) << subject << " " << check;
+    EXPECT_EQ(c->status, CheckStatus::kPass) << subject << " " << check << ": " << c->detail;
+  }
+  // The furnace reports where it is worst.
+  EXPECT_EQ(Find(r, "E+Eavg", "furnace")->at.size(), 2u);
+}
+
+TEST(Check, FailsOnATamperedTexel) {
+  const fs::path d = CopyOfGood("check_texel");
+  fs::remove(d / "E.exr");
+  fs::remove(d / "E.h");
+  // 20x the stated errorMax at one interior texel of E.bin.
+  const Table before = ReadBinaryTable((d / "E.bin").string());
+  const size_t i = before.index(3, 4, 0);
+  PatchBin(d / "E.bin", i, static_cast<float>(before.values[i] - 20.0 * before.MaxError()));
+  const CheckReport r = CheckBakedSet(d.string(), Quick());
+  EXPECT_FALSE(r.passed());
+  const CheckResult *texels = Find(r, "E", "texels");
+  ASSERT_NE(texels, nullptr);
+  EXPECT_EQ(texels->status, CheckStatus::kFail) << texels->detail;
+  EXPECT_NEAR(texels->at[0].second, before.x.TexelCenter(3), 1e-12);
+  EXPECT_NEAR(texels->at[1].second, before.y.TexelCenter(4), 1e-12);
+  fs::remove_all(d);
+}
+
+TEST(Check, FailsWhenFormatsDisagree) {
+  const fs::path d = CopyOfGood("check_formats");
+  PatchBin(d / "dfg.bin", 5, BinValue(d / "dfg.bin", 5) + 1e-3f);
+  const CheckReport r = CheckBakedSet(d.string(), Quick());
+  const CheckResult *formats = Find(r, "dfg", "formats");
+  ASSERT_NE(formats, nullptr);
+  EXPECT_EQ(formats->status, CheckStatus::kFail);
+  EXPECT_NE(formats->detail.find("dfg.bin differs"), std::string::npos) << formats->detail;
+  fs::remove_all(d);
+}
+
+TEST(Check, FailsOnNanAndOutOfRange) {
+  const fs::path d = CopyOfGood("check_nan");
+  for (const char *f : {"dfg.exr", "dfg.h", "E.exr", "E.h"}) fs::remove(d / f);
+  PatchBin(d / "dfg.bin", 7, std::nanf(""));
+  PatchBin(d / "E.bin", 2, 1.01f);
+  const CheckReport r = CheckBakedSet(d.string(), Quick());
+  EXPECT_EQ(Find(r, "dfg", "finite")->status, CheckStatus::kFail);
+  EXPECT_EQ(Find(r, "E", "range")->status, CheckStatus::kFail);
+  EXPECT_NE(Find(r, "E", "range")->detail.find("E > 1"), std::string::npos);
+  fs::remove_all(d);
+}
+
+TEST(Check, FailsOnAMixedSetAndOnForeignMetadata) {
+  // E_avg from Beckmann next to GGX E: the furnace and the average refuse.
+  const fs::path d = CopyOfGood("check_mixed");
+  const fs::path other = test::Scratch("check_mixed_other");
+  ASSERT_EQ(Lutbake("bake --out " + other.string() +
+                    " --tables Eavg --size 8 --samples 4096 --ndf beckmann")
+                .status,
+            0);
+  for (const char *f : {"Eavg.exr", "Eavg.bin", "Eavg.h"})
+    fs::copy_file(other / f, d / f, fs::copy_options::overwrite_existing);
+  fs::remove(d / "Eavg.err.exr");
+  CheckReport r = CheckBakedSet(d.string(), Quick());
+  EXPECT_EQ(Find(r, "E+Eavg", "furnace")->status, CheckStatus::kFail);
+  EXPECT_NE(Find(r, "E+Eavg", "furnace")->detail.find("mixes models"), std::string::npos);
+  // A header whose texel convention is not lutbake's cannot be trusted.
+  const fs::path h = test::Scratch("check_header");
+  fs::create_directories(h);
+  std::ifstream in(GoodBake() / "E.h");
+  std::string text((std::istreambuf_iterator<char>(in)), {});
+  text = std::regex_replace(text, std::regex("texel i of N holds the value at u = \\(i \\+ 0.5\\)"),
+                            "texel i of N holds the value at u = i / (N - 1)");
+  std::ofstream(h / "E.h") << text;
+  r = CheckBakedSet(h.string(), Quick());
+  EXPECT_EQ(Find(r, "E", "metadata")->status, CheckStatus::kFail);
+  EXPECT_NE(Find(r, "E", "metadata")->detail.find("texelConvention"), std::string::npos);
+  fs::remove_all(d);
+  fs::remove_all(other);
+  fs::remove_all(h);
+}
+
+TEST(Check, HeaderAloneIsChecked) {
+  // An engine's copy of the headers only (luts/-style): still checked.
+  const fs::path h = test::Scratch("check_header_only");
+  fs::create_directories(h);
+  fs::copy_file(GoodBake() / "E.h", h / "E.h");
+  fs::copy_file(GoodBake() / "Eavg.h", h / "Eavg.h");
+  const CheckReport r = CheckBakedSet(h.string(), Quick());
+  EXPECT_TRUE(r.passed());
+  EXPECT_EQ(Find(r, "E", "texels")->status, CheckStatus::kPass);
+  EXPECT_EQ(Find(r, "E+Eavg", "furnace")->status, CheckStatus::kPass);
+  fs::remove_all(h);
+}
+
+// Half-storage headers: beside the EXR each value must be the EXR's rounded
+// to half (one half-ulp off is caught); alone, they pass with the storage
+// rounding they state added to their bounds.
+TEST(Check, HalfHeadersAreHeldToTheirRounding) {
+  const fs::path d = test::Scratch("check_half");
+  const test::CommandResult run =
+      Lutbake("bake --out " + d.string() + " --size 8 --tolerance 1e-6 --header-type half");
+  ASSERT_EQ(run.status, 0) << run.output;
+  CheckReport r = CheckBakedSet(d.string(), Quick());
+  EXPECT_TRUE(r.passed());
+  ASSERT_NE(Find(r, "dfg", "formats"), nullptr);
+  EXPECT_EQ(Find(r, "dfg", "formats")->status, CheckStatus::kPass);
+  // Headers alone: judged with their stated storage error.
+  const fs::path h = test::Scratch("check_half_only");
+  fs::create_directories(h);
+  for (const char *name : {"E.h", "Eavg.h", "Favg.h", "dfg.h"}) fs::copy_file(d / name, h / name);
+  r = CheckBakedSet(h.string(), Quick());
+  EXPECT_TRUE(r.passed());
+  // Move one half value by one unit in the last place: formats fails.
+  std::ifstream in(d / "E.h");
+  std::string text((std::istreambuf_iterator<char>(in)), {});
+  in.close();
+  const size_t at = text.find("0x", text.find("kValues["));
+  ASSERT_NE(at, std::string::npos);
+  const unsigned bits = static_cast<unsigned>(std::stoul(text.substr(at, 6), nullptr, 16));
+  char patched[8];
+  std::snprintf(patched, sizeof patched, "0x%04x", bits - 1);
+  text.replace(at, 6, patched);
+  std::ofstream(d / "E.h") << text;
+  r = CheckBakedSet(d.string(), Quick());
+  ASSERT_NE(Find(r, "E", "formats"), nullptr);
+  EXPECT_EQ(Find(r, "E", "formats")->status, CheckStatus::kFail);
+  fs::remove_all(d);
+  fs::remove_all(h);
+}
+
+TEST(Check, CommandLineExitsAndNamesTheFailure) {
+  test::CommandResult run = Lutbake("check " + GoodBake().string() + " --points 16");
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("all checks passed"), std::string::npos);
+  run = Lutbake("check " + GoodBake().string() + " --points 16 --json", true);
+  ASSERT_EQ(run.status, 0);
+  const nlohmann::json j = nlohmann::json::parse(run.output);
+  EXPECT_EQ(j["passed"], true);
+  EXPECT_GE(j["checks"].size(), 20u);
+
+  const fs::path d = CopyOfGood("check_cli");
+  for (const char *f : {"E.exr", "E.h"}) fs::remove(d / f);
+  const Table e = ReadBinaryTable((d / "E.bin").string());
+  PatchBin(d / "E.bin", 0, static_cast<float>(e.values[0] * 0.9));
+  run = Lutbake("check " + d.string() + " --points 16");
+  EXPECT_EQ(run.status, 1);
+  EXPECT_NE(run.output.find("FAILED: E texels"), std::string::npos) << run.output;
+
+  run = Lutbake("check " + (d / "missing").string());
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.output.find("does not exist"), std::string::npos);
+  const fs::path empty = test::Scratch("check_empty");
+  fs::create_directories(empty);
+  run = Lutbake("check " + empty.string());
+  EXPECT_EQ(run.status, 1);
+  EXPECT_NE(run.output.find("no table files"), std::string::npos);
+  fs::remove_all(d);
+  fs::remove_all(empty);
+}
+
+TEST(Lookup, TexelCentresClampingAndTheMuIntegral) {
+  Table t;
+  t.x = LinearAxis("mu", 0.0, 1.0, 4);
+  t.y = LinearAxis("perceptualRoughness", 0.0, 1.0, 3);
+  t.channels = 1;
+  // v = 2 + 3 mu + 5 r at the centres: bilinear reproduces it exactly
+  // between the centres.
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 4; ++x)
+      t.values.push_back(2.0 + 3.0 * t.x.TexelCenter(x) + 5.0 * t.y.TexelCenter(y));
+  EXPECT_EQ(Lookup(t, t.x.TexelCenter(2), t.y.TexelCenter(1)), t.value(2, 1));
+  EXPECT_NEAR(Lookup(t, 0.4, 0.5), 2.0 + 1.2 + 2.5, 1e-15);
+  // Clamped outside the centres (mu < 1/8, r > 5/6).
+  EXPECT_NEAR(Lookup(t, 0.0, 1.0), Lookup(t, 0.125, 5.0 / 6.0), 1e-15);
+  // 2 integral_0^1 L mu dmu with L constant below 1/8 and above 7/8.
+  const double r = 0.5, c = 2.0 + 5.0 * r;
+  const auto f = [&](double mu) { return c + 3.0 * std::clamp(mu, 0.125, 0.875); };
+  // Exact: the clamped pieces and the linear middle, integrated by hand.
+  const double exact = f(0.0) * 0.125 * 0.125 +
+                       (c * (0.875 * 0.875 - 0.125 * 0.125) +
+                        2.0 * (0.875 * 0.875 * 0.875 - 0.125 * 0.125 * 0.125)) +
+                       f(1.0) * (1.0 - 0.875 * 0.875);
+  EXPECT_NEAR(LookupMuAverage(t, t.values, r, 0), exact, 1e-14);
+}
+
+TEST(TableReader, ExrAndHeaderReadBackWhatWasWritten) {
+  const Table exr = ReadExrTable((GoodBake() / "dfg.exr").string());
+  const Table bin = ReadBinaryTable((GoodBake() / "dfg.bin").string());
+  EXPECT_EQ(exr.kind, TableKind::kDfg);
+  EXPECT_EQ(DescribeAxis(exr.x), DescribeAxis(bin.x));
+  EXPECT_EQ(DescribeAxis(exr.y), DescribeAxis(bin.y));
+  EXPECT_EQ(exr.values, bin.values);
+  EXPECT_EQ(*exr.FindMetadata("ndf"), "ggx");
+  const HeaderValues h = ReadHeaderValues((GoodBake() / "dfg.h").string());
+  ASSERT_EQ(h.values.size(), bin.values.size());
+  for (size_t i = 0; i < h.values.size(); ++i)
+    EXPECT_EQ(h.values[i], static_cast<float>(bin.values[i]));
+  Axis axis;
+  EXPECT_TRUE(ParseAxisDescription("mu linear [0, 1], 32 texels", &axis));
+  EXPECT_EQ(axis.count, 32);
+  EXPECT_FALSE(ParseAxisDescription("mu linear [0, 1], 32", &axis));
+  EXPECT_FALSE(ParseAxisDescription("mu linear [1, 0], 32 texels", &axis));
+}
+
+TEST(TableReader, MalformedBinaryIsRefused) {
+  const fs::path d = test::Scratch("reader_bad");
+  fs::create_directories(d);
+  std::ifstream in(GoodBake() / "E.bin", std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  std::ofstream(d / "truncated.bin", std::ios::binary) << bytes.substr(0, bytes.size() - 5);
+  EXPECT_THROW(ReadBinaryTable((d / "truncated.bin").string()), IoError);
+  std::string huge = bytes;
+  const uint32_t width = 1u << 30;
+  std::memcpy(huge.data() + 20, &width, 4);
+  std::ofstream(d / "huge.bin", std::ios::binary) << huge;
+  EXPECT_THROW(ReadBinaryTable((d / "huge.bin").string()), IoError);
+  std::ofstream(d / "text.bin") << "not a table";
+  EXPECT_THROW(ReadBinaryTable((d / "text.bin").string()), IoError);
+  EXPECT_THROW(ReadExrTable((d / "text.bin").string()), IoError);
+  fs::remove_all(d);
+}
+
+}  // namespace
+}  // namespace lutbake

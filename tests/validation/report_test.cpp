@@ -1,0 +1,57 @@
+// The report's measurements: real errors fall as samples rise for the
+// visible-normal estimators, and the quadrature rows agree with the
+// independent reference values (tests/data) at the same points.
+#include "lutbake/validation/report.h"
+
+#include <gtest/gtest.h>
+
+#include "lutbake/integrators/reference_integrator.h"
+#include "support/csv.h"
+
+namespace lutbake {
+namespace {
+
+TEST(Report, VisibleNormalErrorsFallAndQuadratureIsAccurate) {
+  ReportSettings s;
+  s.tables = {TableKind::kE};
+  s.estimators = {Estimator::kVisibleNormal, Estimator::kVisibleNormalRandom,
+                  Estimator::kQuadrature};
+  s.size = 8;
+  s.budgetSeconds = 3;
+  const std::vector<ReportRow> rows = RunReport(s);
+  for (Estimator e : s.estimators) {
+    std::vector<ReportRow> mine;
+    for (const ReportRow &r : rows)
+      if (r.estimator == e) mine.push_back(r);
+    ASSERT_GE(mine.size(), 4u) << ToString(e);
+    // From the first to the last run the samples grow by at least 8x; the
+    // max error must drop by 2x at least (1/sqrt(N) would give 2.8x), the
+    // RMS error too.
+    EXPECT_LT(mine.back().maxError, 0.5 * mine.front().maxError) << ToString(e);
+    EXPECT_LT(mine.back().rmsError, 0.5 * mine.front().rmsError) << ToString(e);
+  }
+  // The quadrature's last row (tolerance <= 1e-5) is within 1e-5 everywhere.
+  double bestQuadrature = 1;
+  for (const ReportRow &r : rows)
+    if (r.estimator == Estimator::kQuadrature) bestQuadrature = r.maxError;
+  EXPECT_LE(bestQuadrature, 1e-5);
+  const std::string csv = ReportCsv(rows);
+  EXPECT_EQ(static_cast<size_t>(std::count(csv.begin(), csv.end(), '\n')), rows.size() + 1);
+  EXPECT_NE(ReportSvg(s, rows).find("<polyline"), std::string::npos);
+  EXPECT_NE(ReportMarkdown(s, rows).find("| vndf |"), std::string::npos);
+}
+
+TEST(Report, ReferenceAgreesWithIndependentValuesAtTexelPoints) {
+  // The report measures against IntegrateReferenceAlbedo at 1e-12; at the
+  // independent points of tests/data it must agree to 1e-10 there too.
+  const std::vector<test::CsvRow> rows = test::ReadCsv(test::DataPath("ggx_E_AB.csv"));
+  for (size_t i = 0; i < rows.size(); i += 29) {
+    const ReferenceAlbedo a =
+        IntegrateReferenceAlbedo(Ndf{NdfKind::kGgx, rows[i].Number("alpha")},
+                                 SmithForm::kCorrelated, rows[i].Number("mu"), 1e-12);
+    EXPECT_NEAR(a.E, rows[i].Number("E_hc"), 1e-10) << rows[i].Text("mu");
+  }
+}
+
+}  // namespace
+}  // namespace lutbake
