@@ -30,7 +30,8 @@ namespace {
 using namespace lutbake;
 
 void BakeAll(const BakeSettings &s) {
-  for (TableKind kind : kAllTables) benchmark::DoNotOptimize(BakeTable(kind, s).values.data());
+  for (const TableDefinition *kind : AllTables())
+    benchmark::DoNotOptimize(BakeTable(*kind, s).values.data());
 }
 
 void DefaultBake(benchmark::State &state) {
@@ -48,8 +49,8 @@ BENCHMARK(AdaptiveBakeSameBound)->Unit(benchmark::kMillisecond)->Iterations(1)->
 
 void Dfg512(benchmark::State &state) {
   BakeSettings s;
-  s.sizeDfg = 512;
-  for (auto _ : state) benchmark::DoNotOptimize(BakeTable(TableKind::kDfg, s).values.data());
+  s.tableSizes = {{"dfg", 512}};
+  for (auto _ : state) benchmark::DoNotOptimize(BakeTable(TableNamed("dfg"), s).values.data());
 }
 BENCHMARK(Dfg512)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
 
@@ -58,7 +59,7 @@ void EvalPointWith(benchmark::State &state, Estimator estimator) {
   s.estimator = estimator;
   if (estimator == Estimator::kAdaptiveQuadrature) s.tolerance = kDefaultQuadratureTolerance;
   for (auto _ : state)
-    benchmark::DoNotOptimize(EvaluateAlbedo(TableKind::kDfg, s, 0.5, 0.25, 0).value[0]);
+    benchmark::DoNotOptimize(EvaluateAlbedo(TableNamed("dfg"), s, 0.5, 0.25, 0).value[0]);
 }
 void EvalPoint(benchmark::State &state) { EvalPointWith(state, Estimator::kQuadrature); }
 void EvalPointAdaptive(benchmark::State &state) {
@@ -75,7 +76,7 @@ void SampledTexel(benchmark::State &state) {
   s.estimator = Estimator::kVisibleNormal;
   s.samples = kSamples;
   for (auto _ : state)
-    benchmark::DoNotOptimize(EvaluateAlbedo(TableKind::kDfg, s, 0.5, 0.25, 0).value[0]);
+    benchmark::DoNotOptimize(EvaluateAlbedo(TableNamed("dfg"), s, 0.5, 0.25, 0).value[0]);
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kSamples));
 }
 BENCHMARK(SampledTexel)->Unit(benchmark::kMillisecond);

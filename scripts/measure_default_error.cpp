@@ -15,9 +15,9 @@ static int Measure(int argc, char **argv) {
   int which = atoi(argv[2]);  // 0 E, 1 dfg
   s.ndf = argc > 3 && atoi(argv[3]) ? NdfKind::kBeckmann : NdfKind::kGgx;
   s.estimator = argc > 4 && atoi(argv[4]) ? Estimator::kNdf : Estimator::kVisibleNormal;
-  TableKind k = which ? TableKind::kDfg : TableKind::kE;
+  const TableDefinition *k = which ? &TableNamed("dfg") : &TableNamed("E");
   auto t0 = std::chrono::steady_clock::now();
-  Table t = BakeTable(k, s);
+  Table t = BakeTable(*k, s);
   double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   int W = t.width(), H = t.height();
   const bool all = which == 0;
@@ -61,7 +61,7 @@ static int Measure(int argc, char **argv) {
   printf(
       "N=%llu table=%s bake %.2fs  checked %zu: max err %.3e at (%d,%d) (grazing col %.3e, smooth "
       "row %.3e); max bound %.3e; err>bound: %d (%.2f%%)\n",
-      (unsigned long long)s.samples, TableName(k), dt, pts.size(), maxe, pts[worst].first,
+      (unsigned long long)s.samples, k->Name(), dt, pts.size(), maxe, pts[worst].first,
       pts[worst].second, maxcol0, maxrow0, maxb, over, 100.0 * over / pts.size());
   return 0;
 }

@@ -27,8 +27,8 @@ std::string Meta(const Table &t, const std::string &key) {
 
 void Verify(const std::string &path, int stride) {
   Table t = ReadBinaryTable(path);
-  for (TableKind k : kAllTables)
-    if (Meta(t, "table") == TableName(k)) t.kind = k;
+  for (const TableDefinition *k : AllTables())
+    if (Meta(t, "table") == k->Name()) t.definition = k;
   const NdfKind ndf = Meta(t, "ndf") == "beckmann" ? NdfKind::kBeckmann : NdfKind::kGgx;
   const SmithForm smith =
       Meta(t, "smith") == "separable" ? SmithForm::kSeparable : SmithForm::kCorrelated;
@@ -45,14 +45,14 @@ void Verify(const std::string &path, int stride) {
   tbb::parallel_for(size_t(0), points.size(), [&](size_t i) {
     const auto [x, y] = points[i];
     double ref[2] = {0, 0};
-    if (t.kind == TableKind::kEavg) {
+    if (t.definition == &TableNamed("Eavg")) {
       const double r = t.x.TexelCenter(x);
       ref[0] = IntegrateReferenceAlbedoAverage(Ndf{ndf, r * r}, smith, 1e-12).value;
     } else {
       const double r = t.y.TexelCenter(y);
       const ReferenceAlbedo a =
           IntegrateReferenceAlbedo(Ndf{ndf, r * r}, smith, t.x.TexelCenter(x), 1e-13);
-      ref[0] = t.kind == TableKind::kDfg ? a.A : a.E;
+      ref[0] = t.definition == &TableNamed("dfg") ? a.A : a.E;
       ref[1] = a.B;
     }
     double e = 0, excess = -1;
@@ -64,7 +64,7 @@ void Verify(const std::string &path, int stride) {
       e = std::max(e, ec);
       if (std::getenv("SHOW") && ec > allowed)
         std::printf("  over: %s (%d,%d) c%d value %.9g ref %.9g err %.3e allowed %.3e\n",
-                    TableName(t.kind), x, y, c, v, ref[c], ec, allowed);
+                    t.definition->Name(), x, y, c, v, ref[c], ec, allowed);
     }
     err[i] = e;
     excessOf[i] = excess;
@@ -81,7 +81,7 @@ void Verify(const std::string &path, int stride) {
   std::printf(
       "%-6s %zu texels checked: real error max %.3e (texel %d,%d) rms %.3e; grazing column %.3e, "
       "smoothest row %.3e; within the file's bound: %.2f%% (%zu over)\n",
-      TableName(t.kind), points.size(), maxErr, points[worst].x, points[worst].y,
+      t.definition->Name(), points.size(), maxErr, points[worst].x, points[worst].y,
       std::sqrt(sumSq / points.size()), col, row, 100.0 * (points.size() - over) / points.size(),
       over);
 }

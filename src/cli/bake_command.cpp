@@ -39,10 +39,10 @@ FresnelModel ParseFresnel(const std::string &s) {
   return FresnelModel::kSchlick;
 }
 
-TableKind ParseTable(const std::string &s) {
-  for (TableKind k : kAllTables)
-    if (s == TableName(k)) return k;
-  return TableKind::kE;
+std::vector<std::string> TableNames() {
+  std::vector<std::string> names;
+  for (const TableDefinition *table : AllTables()) names.push_back(table->Name());
+  return names;
 }
 
 void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
@@ -53,7 +53,7 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
                  "Tables to bake (with --scene: which of the planned tables; one the plan "
                  "leaves out is an error)")
       ->capture_default_str()
-      ->check(ListOf({"E", "Eavg", "Favg", "dfg"}));
+      ->check(ListOf(TableNames()));
   AddModelOptions(app, o.ndf, o.smith);
   app.add_option("--fresnel", o.fresnel,
                  "Fresnel model of the Favg table: schlick (axis F0 in [0,1]), dielectric (exact, "
@@ -108,7 +108,7 @@ namespace {
 // One table to bake: its kind, settings and axes, the name of its files,
 // and what the plan adds to its metadata.
 struct BakeJob {
-  TableKind kind;
+  const TableDefinition *table;
   BakeSettings settings;
   Axis x, y;
   std::string name;
@@ -135,8 +135,7 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
   settings.ndf = ParseNdf(o.ndf);
   settings.smith = ParseSmith(o.smith);
   settings.fresnel = ParseFresnel(o.fresnel);
-  if (o.size > 0)
-    settings.sizeE = settings.sizeEavg = settings.sizeFavg = settings.sizeDfg = o.size;
+  if (o.size > 0) settings.size = o.size;
   if (const int status = ApplySamplingOptions("bake", o.sampling, &settings)) return status;
   const bool tolerance = settings.tolerance > 0.0;
   settings.commandLine = commandLine;
@@ -147,10 +146,7 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
   if (o.scene.used()) {
     if (const int status = PlanConflicts(app)) return status;
     PlanOptions planOptions;
-    planOptions.sizeE = settings.sizeE;
-    planOptions.sizeEavg = settings.sizeEavg;
-    planOptions.sizeFavg = settings.sizeFavg;
-    planOptions.sizeDfg = settings.sizeDfg;
+    planOptions.size = settings.size;
     BakePlan plan;
     if (const int status = MakePlanOrComplain("bake", o.scene, planOptions, &plan)) return status;
     if (!plan.unsupported.empty() && !o.skipUnsupported) {
@@ -166,15 +162,16 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
     // that a build that includes T.h stops here rather than at its #include.
     if (app.count("--tables") > 0) {
       const std::vector<std::string> wanted = SplitList(o.tables);
-      const auto isWanted = [&](TableKind kind) {
-        return std::find(wanted.begin(), wanted.end(), TableName(kind)) != wanted.end();
+      const auto isWanted = [&](const TableDefinition &table) {
+        return std::find(wanted.begin(), wanted.end(), table.Name()) != wanted.end();
       };
       std::vector<std::string> missing;
       for (const std::string &name : wanted) {
-        const TableKind kind = ParseTable(name);
-        const bool planned = std::any_of(plan.tables.begin(), plan.tables.end(),
-                                         [&](const PlannedTable &t) { return t.kind == kind; }) ||
-                             (kind == TableKind::kFavg && plan.schlickFavgFunction);
+        const TableDefinition &table = TableNamed(name);
+        const bool planned =
+            std::any_of(plan.tables.begin(), plan.tables.end(),
+                        [&](const PlannedTable &t) { return t.definition == &table; }) ||
+            (table.Role() == PlanRole::kFresnelAverage && plan.schlickFavgFunction);
         if (planned) continue;
         std::string reason = "not needed by the plan";
         for (const OmittedTable &t : plan.omitted)
@@ -189,10 +186,15 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
                      "--no-compensation (see lutbake plan).\n";
         return 1;
       }
-      plan.tables.erase(std::remove_if(plan.tables.begin(), plan.tables.end(),
-                                       [&](const PlannedTable &t) { return !isWanted(t.kind); }),
-                        plan.tables.end());
-      if (!isWanted(TableKind::kFavg)) plan.schlickFavgFunction = false;
+      plan.tables.erase(
+          std::remove_if(plan.tables.begin(), plan.tables.end(),
+                         [&](const PlannedTable &t) { return !isWanted(*t.definition); }),
+          plan.tables.end());
+      // The closed-form F_avg header stands for the Fresnel-average table.
+      if (std::none_of(wanted.begin(), wanted.end(), [](const std::string &name) {
+            return TableNamed(name).Role() == PlanRole::kFresnelAverage;
+          }))
+        plan.schlickFavgFunction = false;
     }
     if (plan.empty()) {
       std::cerr << "lutbake bake: the plan needs no tables; nothing written.\n";
@@ -205,15 +207,15 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
       for (const std::string &path : *list) sources += (sources.empty() ? "" : ", ") + path;
     planMetadata.emplace_back("planSources", sources);
     for (const PlannedTable &t : plan.tables) {
-      BakeJob job{t.kind, PlannedSettings(t, settings), t.x, t.y, t.name, planMetadata};
+      BakeJob job{t.definition, PlannedSettings(t, settings), t.x, t.y, t.name, planMetadata};
       job.metadata.emplace_back("planMaterials", JoinNames(t.materials));
       jobs.push_back(job);
     }
     schlickFavgHeader = plan.schlickFavgFunction;
   } else {
     for (const std::string &name : SplitList(o.tables)) {
-      BakeJob job{ParseTable(name), settings, {}, {}, name, {}};
-      DefaultAxes(job.kind, settings, &job.x, &job.y);
+      BakeJob job{&TableNamed(name), settings, {}, {}, name, {}};
+      DefaultAxes(*job.table, settings, &job.x, &job.y);
       jobs.push_back(job);
     }
   }
@@ -244,8 +246,8 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
     std::vector<std::string> unreached;
     for (const BakeJob &job : jobs) {
       BakeStats stats;
-      Table table = BakeTableOn(job.kind, job.settings, job.x, job.y, {}, &stats);
-      if (job.name != TableName(job.kind)) table.name = job.name;
+      Table table = BakeTableOn(*job.table, job.settings, job.x, job.y, {}, &stats);
+      if (job.name != job.table->Name()) table.name = job.name;
       table.metadata.insert(table.metadata.end(), job.metadata.begin(), job.metadata.end());
       nlohmann::ordered_json files = nlohmann::ordered_json::array();
       const std::filesystem::path base = std::filesystem::path(o.outDir) / job.name;
@@ -317,13 +319,16 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
       summary["tables"].push_back(entry);
       std::cerr << "Favg  closed form (every compensated material uses Schlick): Favg.h\n";
     }
-    // Kulla-Conty helpers wherever a header bake holds both E and E_avg of one
-    // model (E and Eavg, E_beckmann and Eavg_beckmann, ...).
+    // Kulla-Conty helpers wherever a header bake holds both a table and the
+    // average that declares them (TableRelations::kullaConty) for one model:
+    // E and Eavg, E_beckmann and Eavg_beckmann, ...
     for (const BakeJob &job : jobs) {
-      if (!headers || job.kind != TableKind::kE) continue;
-      const std::string suffix = job.name.substr(1);
+      const TableRelations relations = job.table->Relations();
+      if (!headers || !relations.kullaConty) continue;
+      const std::string suffix = job.name.substr(std::string(job.table->Name()).size());
       const bool averaged = std::any_of(jobs.begin(), jobs.end(), [&](const BakeJob &other) {
-        return other.kind == TableKind::kEavg && other.name == "Eavg" + suffix;
+        return other.table->Name() == relations.averageOf &&
+               other.name == relations.averageOf + suffix;
       });
       if (!averaged) continue;
       const std::string path =

@@ -34,7 +34,8 @@ struct BakeOptions {
 NdfKind ParseNdf(const std::string &name);
 SmithForm ParseSmith(const std::string &name);
 FresnelModel ParseFresnel(const std::string &name);
-TableKind ParseTable(const std::string &name);
+// Every table name, in the registry's order (the accepted --tables values).
+std::vector<std::string> TableNames();
 
 void SetupBakeCommand(CLI::App &app, BakeOptions &options);
 

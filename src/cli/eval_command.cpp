@@ -3,9 +3,11 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -61,7 +63,7 @@ std::vector<double> Reals(const std::string &list) {
 
 // One point of the evaluation: its coordinates as the user gave them.
 struct Point {
-  double x = 0, y = 0;  // (mu, r) for E and dfg; (r, 0) for Eavg; (F0 or eta, k) for Favg
+  double x = 0, y = 0;  // the table's axis values: (mu, r) for E, (r, 0) for Eavg, ...
   PointValue result;
 };
 
@@ -78,7 +80,9 @@ std::string EstimatorUsed(const PointValue &v, const BakeSettings &s) {
 void SetupEvalCommand(CLI::App &app, EvalOptions &o) {
   app.add_option("--table", o.table, "The table to evaluate")
       ->required()
-      ->check(OneOf({"E", "Eavg", "Favg", "dfg"}));
+      ->check(OneOf(TableNames()));
+  // Each option's widest range here; each table narrows it (its
+  // PointCoordinate), and says so.
   app.add_option("--mu", o.mu, "E, dfg: view cosines, comma-separated (0 = the grazing limit)")
       ->type_name("LIST")
       ->check(RealList({0.0, 1.0, "comma-separated numbers in [0, 1]"}));
@@ -86,8 +90,7 @@ void SetupEvalCommand(CLI::App &app, EvalOptions &o) {
                  "E, Eavg, dfg: perceptual roughness r (alpha = r^2), comma-separated; 0 is the "
                  "mirror, exact")
       ->type_name("LIST")
-      ->check(RealList({std::sqrt(kMinimumAlpha), 1.0,
-                        "comma-separated numbers: 0 (a mirror) or 1e-12 to 1", true}));
+      ->check(RealList({0.0, 1.0, "comma-separated numbers in [0, 1]"}));
   app.add_option("--fresnel", o.fresnel, "Favg: the Fresnel model")
       ->capture_default_str()
       ->check(OneOf({"schlick", "dielectric", "conductor"}));
@@ -118,94 +121,109 @@ void SetupEvalCommand(CLI::App &app, EvalOptions &o) {
       "  lutbake eval --table Favg --fresnel conductor --eta 0.2 --k 3,10");
 }
 
-int RunEval(const EvalOptions &o) {
-  const TableKind kind = ParseTable(o.table);
-  const bool albedo = kind == TableKind::kE || kind == TableKind::kDfg;
+int RunEval(const EvalOptions &o, CLI::App &app) {
+  const TableDefinition &table = TableNamed(o.table);
+  const std::string name = table.Name();
   const auto complain = [](const std::string &message) {
     std::cerr << "lutbake eval: " << message << "\n";
     return 2;
   };
-  // Which point options the table takes; the others are refused rather
-  // than ignored, so that a typo cannot go unnoticed.
-  const FresnelModel fresnel = ParseFresnel(o.fresnel);
-  if (albedo && o.mu.empty()) return complain("--table " + o.table + " needs --mu");
-  if (!albedo && !o.mu.empty()) return complain("--mu does not apply to --table " + o.table);
-  if (kind != TableKind::kFavg && o.perceptualRoughness.empty())
-    return complain("--table " + o.table + " needs --roughness");
-  if (kind == TableKind::kFavg && !o.perceptualRoughness.empty())
-    return complain("--roughness does not apply to --table Favg");
-  if (kind != TableKind::kFavg && (!o.f0.empty() || !o.eta.empty() || !o.k.empty()))
-    return complain("--f0, --eta and --k apply only to --table Favg");
-  if (kind == TableKind::kFavg) {
-    if (fresnel == FresnelModel::kSchlick && (o.f0.empty() || !o.eta.empty() || !o.k.empty()))
-      return complain("--table Favg --fresnel schlick takes --f0 (and not --eta or --k)");
-    if (fresnel == FresnelModel::kDielectric && (o.eta.empty() || !o.f0.empty() || !o.k.empty()))
-      return complain("--table Favg --fresnel dielectric takes --eta (and not --f0 or --k)");
-    if (fresnel == FresnelModel::kConductor && (o.eta.empty() || !o.f0.empty()))
-      return complain("--table Favg --fresnel conductor takes --eta and --k (and not --f0)");
-  }
 
   BakeSettings settings;
   settings.ndf = ParseNdf(o.ndf);
   settings.smith = ParseSmith(o.smith);
-  settings.fresnel = fresnel;
+  settings.fresnel = ParseFresnel(o.fresnel);
+
+  // Options that choose a model the table does not have are refused, so
+  // that a typo cannot go unnoticed.
+  const std::vector<std::string> models = table.ModelOptions();
+  for (const char *option : {"ndf", "smith", "fresnel"})
+    if (app.count(std::string("--") + option) > 0 &&
+        std::find(models.begin(), models.end(), option) == models.end())
+      return complain(std::string("--") + option + " does not apply to --table " + name);
+
+  // The point options: which the table takes with these settings; the
+  // others are refused rather than ignored.
+  const std::map<std::string, const std::string *> given = {{"mu", &o.mu},
+                                                            {"roughness", &o.perceptualRoughness},
+                                                            {"f0", &o.f0},
+                                                            {"eta", &o.eta},
+                                                            {"k", &o.k}};
+  const std::vector<PointCoordinate> coordinates = table.Coordinates(settings);
+  const Metadata labels = table.PointLabels(settings);
+  std::string variant;  // " --fresnel schlick"
+  for (const auto &[option, value] : labels) variant += " --" + option + " " + value;
+  std::string takes;
+  for (const PointCoordinate &c : coordinates)
+    takes += (takes.empty() ? "--" : " and --") + c.option;
+  const std::vector<std::string> variantOptions = table.CoordinateOptions();
+  for (const auto &entry : given) {
+    const std::string &option = entry.first;  // named: lambdas cannot capture bindings in C++17
+    if (entry.second->empty()) continue;
+    const bool applies = std::any_of(coordinates.begin(), coordinates.end(),
+                                     [&](const PointCoordinate &c) { return c.option == option; });
+    if (applies) continue;
+    if (std::find(variantOptions.begin(), variantOptions.end(), option) != variantOptions.end())
+      return complain("--table " + name + variant + " takes " + takes + "; --" + option +
+                      " does not apply to it");
+    std::string users;
+    for (const TableDefinition *other : AllTables()) {
+      const std::vector<std::string> options = other->CoordinateOptions();
+      if (std::find(options.begin(), options.end(), option) != options.end())
+        users += (users.empty() ? "" : ", ") + std::string(other->Name());
+    }
+    return complain("--" + option + " does not apply to --table " + name +
+                    "; it applies only to --table " + users);
+  }
+  std::vector<std::vector<double>> values;  // per coordinate
+  for (const PointCoordinate &c : coordinates) {
+    const std::string &list = *given.at(c.option);
+    if (list.empty()) {
+      if (c.required) return complain("--table " + name + variant + " needs --" + c.option);
+      values.push_back({0.0});
+      continue;
+    }
+    for (const std::string &item : SplitList(list))
+      if (!c.Accepts(std::strtod(item.c_str(), nullptr)))
+        return complain("--" + c.option + ": '" + item + "' is out of range for --table " + name +
+                        variant + "; accepted: " + c.accepted);
+    values.push_back(Reals(list));
+  }
   if (const int status = ApplySamplingOptions("eval", o.sampling, &settings)) return status;
 
-  std::vector<Point> points;
-  if (kind == TableKind::kFavg) {
-    const std::vector<double> xs = Reals(fresnel == FresnelModel::kSchlick ? o.f0 : o.eta);
-    const std::vector<double> ys = o.k.empty() ? std::vector<double>{0.0} : Reals(o.k);
-    for (double x : xs)
-      for (double y : ys) points.push_back({x, y, {}});
-  } else {
-    const std::vector<double> rs = Reals(o.perceptualRoughness);
-    const std::vector<double> mus = albedo ? Reals(o.mu) : std::vector<double>{0.0};
-    if (rs.size() * mus.size() > kMaxPoints)
-      return complain(std::to_string(rs.size() * mus.size()) +
-                      " points (--mu x --roughness); accepted: at most " +
-                      std::to_string(kMaxPoints));
-    for (double r : rs)
-      for (double mu : mus) points.push_back({albedo ? mu : r, albedo ? r : 0.0, {}});
+  // Row-major, as a table stores them: y outer, x inner.
+  const std::vector<double> &xs = values[0];
+  const std::vector<double> ys = values.size() > 1 ? values[1] : std::vector<double>{0.0};
+  if (xs.size() * ys.size() > kMaxPoints) {
+    std::string options;
+    for (const PointCoordinate &c : coordinates)
+      options += (options.empty() ? "--" : " x --") + c.option;
+    return complain(std::to_string(xs.size() * ys.size()) + " points (" + options +
+                    "); accepted: at most " + std::to_string(kMaxPoints));
   }
+  std::vector<Point> points;
+  for (double y : ys)
+    for (double x : xs) points.push_back({x, y, {}});
 
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
                                   static_cast<size_t>(ThreadCount(o.threads)));
-  tbb::parallel_for(size_t{0}, points.size(), [&](size_t i) {
-    Point &p = points[i];
-    if (kind == TableKind::kFavg) {
-      p.result = EvaluateFresnelAverage(fresnel, p.x, p.y);
-    } else if (kind == TableKind::kEavg) {
-      const double alpha = p.x * p.x;
-      p.result = EvaluateAlbedoAverage(settings, alpha, PointSeed(kind, alpha, 0.0, settings.seed));
-    } else {
-      const double alpha = p.y * p.y;
-      p.result =
-          EvaluateAlbedo(kind, settings, p.x, alpha, PointSeed(kind, p.x, alpha, settings.seed));
-    }
-  });
+  try {
+    tbb::parallel_for(size_t{0}, points.size(), [&](size_t i) {
+      points[i].result = table.Evaluate(settings, points[i].x, points[i].y);
+    });
+  } catch (const std::domain_error &e) {
+    return complain(std::string(e.what()) + " (--table " + name + ")");
+  }
 
-  const int channels = kind == TableKind::kDfg ? 2 : 1;
+  const std::vector<std::string> meanings = table.ChannelMeanings();
+  const int channels = table.Channels();
   for (const Point &p : points) {
+    const double coordinate[2] = {p.x, p.y};
     if (o.json) {
       nlohmann::ordered_json line;
       line["table"] = o.table;
-      switch (kind) {
-        case TableKind::kE:
-        case TableKind::kDfg:
-          line["mu"] = p.x;
-          line["roughness"] = p.y;
-          break;
-        case TableKind::kEavg: line["roughness"] = p.x; break;
-        case TableKind::kFavg:
-          line["fresnel"] = o.fresnel;
-          if (fresnel == FresnelModel::kSchlick) {
-            line["f0"] = p.x;
-          } else {
-            line["eta"] = p.x;
-            if (fresnel == FresnelModel::kConductor) line["k"] = p.y;
-          }
-          break;
-      }
+      for (const auto &[option, value] : labels) line[option] = value;
+      for (size_t c = 0; c < coordinates.size(); ++c) line[coordinates[c].option] = coordinate[c];
       if (channels == 2) {
         line["value"] = {p.result.value[0], p.result.value[1]};
         line["error"] = {p.result.error[0], p.result.error[1]};
@@ -218,34 +236,20 @@ int RunEval(const EvalOptions &o) {
       std::cout << line.dump() << "\n";
       continue;
     }
-    char text[400];
-    switch (kind) {
-      case TableKind::kE:
-        std::snprintf(text, sizeof text, "E   mu %-10.6g roughness %-10.6g E %.17g  error %.2g",
-                      p.x, p.y, p.result.value[0], p.result.error[0]);
-        break;
-      case TableKind::kDfg:
-        std::snprintf(
-            text, sizeof text, "dfg mu %-10.6g roughness %-10.6g A %.17g  B %.17g  error %.2g %.2g",
-            p.x, p.y, p.result.value[0], p.result.value[1], p.result.error[0], p.result.error[1]);
-        break;
-      case TableKind::kEavg:
-        std::snprintf(text, sizeof text, "Eavg roughness %-10.6g Eavg %.17g  error %.2g", p.x,
-                      p.result.value[0], p.result.error[0]);
-        break;
-      case TableKind::kFavg:
-        if (fresnel == FresnelModel::kSchlick)
-          std::snprintf(text, sizeof text, "Favg schlick f0 %-10.6g Favg %.17g  error %.2g", p.x,
-                        p.result.value[0], p.result.error[0]);
-        else if (fresnel == FresnelModel::kDielectric)
-          std::snprintf(text, sizeof text, "Favg dielectric eta %-10.6g Favg %.17g  error %.2g",
-                        p.x, p.result.value[0], p.result.error[0]);
-        else
-          std::snprintf(text, sizeof text,
-                        "Favg conductor eta %-10.6g k %-10.6g Favg %.17g  error %.2g", p.x, p.y,
-                        p.result.value[0], p.result.error[0]);
-        break;
-    }
+    // "E   mu 0.5        roughness 0.3        E 0.97...  error 1e-10"
+    char text[512];
+    int n = std::snprintf(text, sizeof text, "%-3s ", name.c_str());
+    for (const auto &[option, value] : labels)
+      n += std::snprintf(text + n, sizeof text - n, "%s ", value.c_str());
+    for (size_t c = 0; c < coordinates.size(); ++c)
+      n += std::snprintf(text + n, sizeof text - n, "%s %-10.6g ", coordinates[c].option.c_str(),
+                         coordinate[c]);
+    for (int c = 0; c < channels; ++c)
+      n += std::snprintf(text + n, sizeof text - n, "%s %.17g  ", meanings[c].c_str(),
+                         p.result.value[c]);
+    n += std::snprintf(text + n, sizeof text - n, "error");
+    for (int c = 0; c < channels; ++c)
+      n += std::snprintf(text + n, sizeof text - n, " %.2g", p.result.error[c]);
     std::cout << text << "  (" << EstimatorUsed(p.result, settings);
     if (p.result.samples) std::cout << ", " << p.result.samples << " samples";
     std::cout << ")\n";

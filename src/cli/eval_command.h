@@ -24,6 +24,7 @@ struct EvalOptions {
 };
 
 void SetupEvalCommand(CLI::App &app, EvalOptions &options);
-int RunEval(const EvalOptions &options);
+// `app` is the eval subcommand, to tell which options were given.
+int RunEval(const EvalOptions &options, CLI::App &app);
 
 }  // namespace lutbake::cli

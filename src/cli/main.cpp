@@ -81,7 +81,7 @@ int main(int argc, char **argv) {
   try {
     if (bake->parsed()) return lutbake::cli::RunBake(bakeOptions, commandLine, *bake);
     if (plan->parsed()) return lutbake::cli::RunPlan(planOptions);
-    if (eval->parsed()) return lutbake::cli::RunEval(evalOptions);
+    if (eval->parsed()) return lutbake::cli::RunEval(evalOptions, *eval);
     if (check->parsed()) return lutbake::cli::RunCheck(checkOptions);
     if (report->parsed()) return lutbake::cli::RunReport(reportOptions);
   } catch (const std::exception &e) {

@@ -88,8 +88,7 @@ int RunPlan(const PlanCommandOptions &o) {
     return 2;
   }
   PlanOptions planOptions;
-  if (o.size > 0)
-    planOptions.sizeE = planOptions.sizeEavg = planOptions.sizeFavg = planOptions.sizeDfg = o.size;
+  if (o.size > 0) planOptions.size = o.size;
   BakePlan plan;
   if (const int status = MakePlanOrComplain("plan", o.scene, planOptions, &plan)) return status;
   std::cout << (o.json ? PlanJson(plan) + "\n" : DescribePlan(plan));

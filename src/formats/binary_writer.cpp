@@ -5,6 +5,7 @@
 
 #include "lutbake/formats/binary_format.h"
 #include "lutbake/formats/writer.h"
+#include "lutbake/tables/table_definition.h"
 
 namespace lutbake {
 
@@ -185,9 +186,7 @@ Table ReadBinaryTable(const std::string &path) {
     if (eq != std::string::npos)
       table.metadata.emplace_back(line.substr(0, eq), line.substr(eq + 1));
   }
-  for (TableKind k : kAllTables)
-    if (const std::string *name = table.FindMetadata("table"); name && *name == TableName(k))
-      table.kind = k;
+  if (const std::string *name = table.FindMetadata("table")) table.definition = FindTable(*name);
   const size_t count = static_cast<size_t>(width) * height * channels;
   const size_t blocks = (flags & 1u) ? 2 : 1;
   if (in.size() != dataOffset + blocks * valueBytes * count)

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "lutbake/formats/writer.h"
+#include "lutbake/tables/table_definition.h"
 
 namespace lutbake {
 
@@ -191,14 +192,9 @@ class CppHeaderWriter final : public TableWriter {
     };
     axisLine("x (width):  ", table.x);
     if (table.is2D()) axisLine("y (height): ", table.y);
-    if (table.kind != TableKind::kFavg)
-      h << "// Roughness is perceptual roughness r; the NDF width is alpha = r^2.\n";
-    h << "// Layout: kValues[(y * kWidth + x) * kChannels + c]";
-    if (table.kind == TableKind::kDfg)
-      h << "; channel 0 = A (scale), 1 = B (bias):\n"
-           "// specular albedo = F0 A + F90 B.\n";
-    else
-      h << "; one channel.\n";
+    const HeaderText notes = table.definition->Header(table);
+    for (const std::string &note : notes.notes) h << "// " << note << "\n";
+    h << "// Layout: kValues[(y * kWidth + x) * kChannels + c]" << notes.layout;
     h << "// Lookups interpolate bilinearly between texel centres, clamp at the edges,\n"
          "// and return a texel's value exactly at its centre.\n";
     h << "// kErrorMax bounds |value - truth| for every value as stored here, the\n"
@@ -232,15 +228,12 @@ class CppHeaderWriter final : public TableWriter {
     };
     axisNames("X", table.x);
     if (table.is2D()) axisNames("Y", table.y);
-    if (table.kind != TableKind::kFavg)
-      h << "inline constexpr bool kAlphaIsPerceptualRoughnessSquared = true;\n";
+    for (const std::string &constant : notes.constants) h << constant << "\n";
     h << "// Texel i of an axis of n texels holds the value at u = (i + kTexelCentre) / n.\n";
     h << "inline constexpr double kTexelCentre = 0.5;\n";
     h << "inline constexpr const char *kChannelNames[kChannels] = {";
-    if (table.kind == TableKind::kDfg)
-      h << "\"A\", \"B\"";
-    else
-      h << StringLiteral(TableName(table.kind));
+    const std::vector<std::string> meanings = table.definition->ChannelMeanings();
+    for (size_t c = 0; c < meanings.size(); ++c) h << (c ? ", " : "") << StringLiteral(meanings[c]);
     h << "};\n";
     if (const std::string *version = table.FindMetadata("lutbakeVersion"))
       text("kLutbakeVersion", *version);
@@ -312,24 +305,18 @@ class CppHeaderWriter final : public TableWriter {
     };
     body += coordinate(table.x, px, "X", "kWidth", "&x0, &wx");
     if (table.is2D()) body += coordinate(table.y, py, "Y", "kHeight", "&y0, &wy");
-    if (table.kind == TableKind::kDfg) {
-      h << "// Split-sum terms {A, B} at view cosine mu and perceptual roughness r.\n";
+    h << "// " << notes.lookupComment << "\n";
+    if (table.channels == 2) {
       h << "inline std::array<float, 2> lookup_" << name << "(float " << px << ", float " << py
         << ") {\n"
         << body << "  return {static_cast<float>(" << t << "Sample(x0, wx, y0, wy, 0)),\n"
         << "          static_cast<float>(" << t << "Sample(x0, wx, y0, wy, 1))};\n}\n\n";
     } else {
-      if (table.kind == TableKind::kE)
-        h << "// Directional albedo E at view cosine mu and perceptual roughness r.\n";
-      else if (table.kind == TableKind::kEavg)
-        h << "// Average albedo E_avg at perceptual roughness r.\n";
-      else
-        h << "// Average Fresnel F_avg at the Fresnel parameter(s) " << px
-          << (table.is2D() ? " and " + py : std::string()) << ".\n";
       h << "inline float lookup_" << name << "(float " << px
         << (table.is2D() ? ", float " + py : std::string()) << ") {\n"
         << body << "  return static_cast<float>(" << t << "Sample(x0, wx, y0, wy, 0));\n}\n\n";
     }
+    if (notes.helpers) h << notes.helpers("lookup_" + name);
     h << "}  // namespace " << ns << "\n";
     WriteTextFile(path, h.str());
   }

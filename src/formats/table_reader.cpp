@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "lutbake/formats/writer.h"
+#include "lutbake/tables/table_definition.h"
 
 namespace lutbake {
 
@@ -59,14 +60,15 @@ Table ReadExrTable(const std::string &path) {
                     " but the axes say " + std::to_string(table.x.count) + " x " +
                     std::to_string(table.y.count));
     // "T", or "T.err" for an error map (ErrorMapOf).
-    bool known = false;
     const std::string *name = table.FindMetadata("table");
-    for (TableKind k : kAllTables)
-      if (name && (*name == TableName(k) || *name == std::string(TableName(k)) + ".err")) {
-        table.kind = k;
-        known = true;
-      }
-    if (!known) throw IoError(path + ": attribute 'table' missing or not E, Eavg, Favg or dfg");
+    if (name) {
+      const std::string plain = name->size() > 4 && name->compare(name->size() - 4, 4, ".err") == 0
+                                    ? name->substr(0, name->size() - 4)
+                                    : *name;
+      table.definition = FindTable(plain);
+    }
+    if (!table.definition)
+      throw IoError(path + ": attribute 'table' missing or not one of " + TableNameList());
     std::vector<float> pixels(static_cast<size_t>(width) * height * table.channels);
     Imf::FrameBuffer frame;
     const size_t xStride = sizeof(float) * table.channels;

@@ -80,6 +80,21 @@ std::string ShortAxis(const Axis &axis) {
   return text + " (" + std::to_string(axis.count) + (axis.count == 1 ? " texel)" : " texels)");
 }
 
+// The tables that serve a purpose, in the registry's order.
+std::vector<const TableDefinition *> TablesFor(PlanRole role) {
+  std::vector<const TableDefinition *> tables;
+  for (const TableDefinition *t : AllTables())
+    if (t->Role() == role) tables.push_back(t);
+  return tables;
+}
+
+int SizeFor(const PlanOptions &o, const TableDefinition &table) {
+  BakeSettings s;
+  s.size = o.size;
+  s.tableSizes = o.tableSizes;
+  return s.SizeFor(table.Name(), table.DefaultSize());
+}
+
 std::string JoinNames(const std::vector<std::string> &names) {
   std::string out;
   for (const std::string &n : names) out += (out.empty() ? "" : ", ") + n;
@@ -128,56 +143,60 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
   for (const auto &[model, uses] : compensated) models.insert(model);
   for (const auto &[model, uses] : ibl) models.insert(model);
   const bool variants = models.size() > 1;
-  const auto albedoTable = [&](TableKind kind, const Model &model, const Uses &uses) {
+  // A table over the roughness its materials use: its default axes, the
+  // roughness axis narrowed (or listed).
+  const auto roughnessTable = [&](const TableDefinition &table, const Model &model,
+                                  const Uses &uses) {
     PlannedTable t;
-    t.kind = kind;
-    t.name = std::string(TableName(kind)) + (variants ? Suffix(model.first, model.second) : "");
+    t.definition = &table;
+    t.name = std::string(table.Name()) + (variants ? Suffix(model.first, model.second) : "");
     t.ndf = model.first;
     t.smith = model.second;
     t.roughness = uses.Cover(options.maxListedRoughness);
     t.materials = uses.materials;
-    const int full = kind == TableKind::kE     ? options.sizeE
-                     : kind == TableKind::kDfg ? options.sizeDfg
-                                               : options.sizeEavg;
-    const Axis r = AxisOver("perceptualRoughness", t.roughness, full, 1.0);
-    if (kind == TableKind::kEavg) {
-      t.x = r;
-      t.y = LinearAxis("", 0.0, 1.0, 1);
-    } else {
-      t.x = MuAxis(full);
-      t.y = r;
-    }
+    const int full = SizeFor(options, table);
+    table.Axes(PlannedSettings(t, BakeSettings{}), full, &t.x, &t.y);
+    Axis &r = table.PlannedRoughnessAxis() == 0 ? t.x : t.y;
+    r = AxisOver(r.name, t.roughness, full, 1.0);
     plan.tables.push_back(t);
   };
-  for (const auto &[model, uses] : compensated) {
-    albedoTable(TableKind::kE, model, uses);
-    albedoTable(TableKind::kEavg, model, uses);
-  }
-  for (const auto &[model, uses] : fresnel) {
-    PlannedTable t;
-    t.kind = TableKind::kFavg;
-    t.fresnel = model;
-    t.name = fresnel.size() > 1 ? "Favg_" + std::string(ToString(model)) : "Favg";
-    const Uses &eta = uses.first, &k = uses.second;
-    t.eta = eta.Cover(options.maxListedRoughness);
-    t.materials = eta.materials;
-    // Linear ranges get the full table's texel count: the F_avg axes have no
-    // fixed full width to share (section 1 of the SPEC leaves them open).
-    t.x = AxisOver("eta", t.eta, options.sizeFavg, t.eta.max - t.eta.min);
-    t.y = LinearAxis("", 0.0, 1.0, 1);
-    if (model == FresnelModel::kConductor) {
-      t.k = k.Cover(options.maxListedRoughness);
-      t.y = AxisOver("k", t.k, options.sizeFavg, t.k.max - t.k.min);
+  for (const auto &[model, uses] : compensated)
+    for (const TableDefinition *table : TablesFor(PlanRole::kEnergyCompensation))
+      roughnessTable(*table, model, uses);
+  for (const TableDefinition *table : TablesFor(PlanRole::kFresnelAverage))
+    for (const auto &[model, uses] : fresnel) {
+      PlannedTable t;
+      t.definition = table;
+      t.fresnel = model;
+      t.name = std::string(table->Name()) +
+               (fresnel.size() > 1 ? "_" + std::string(ToString(model)) : std::string());
+      const int full = SizeFor(options, *table);
+      const Uses &eta = uses.first, &k = uses.second;
+      t.eta = eta.Cover(options.maxListedRoughness);
+      t.materials = eta.materials;
+      // Linear ranges get the full table's texel count: the F_avg axes have no
+      // fixed full width to share (section 1 of the SPEC leaves them open).
+      t.x = AxisOver("eta", t.eta, full, t.eta.max - t.eta.min);
+      t.y = LinearAxis("", 0.0, 1.0, 1);
+      if (model == FresnelModel::kConductor) {
+        t.k = k.Cover(options.maxListedRoughness);
+        t.y = AxisOver("k", t.k, full, t.k.max - t.k.min);
+      }
+      plan.tables.push_back(t);
     }
-    plan.tables.push_back(t);
-  }
-  for (const auto &[model, uses] : ibl) albedoTable(TableKind::kDfg, model, uses);
+  for (const auto &[model, uses] : ibl)
+    for (const TableDefinition *table : TablesFor(PlanRole::kImageBasedLighting))
+      roughnessTable(*table, model, uses);
 
   // Why each table that is not planned is left out.
-  const auto has = [&](TableKind kind) {
+  const auto has = [&](PlanRole role) {
     for (const PlannedTable &t : plan.tables)
-      if (t.kind == kind) return true;
+      if (t.definition->Role() == role) return true;
     return false;
+  };
+  const auto omit = [&](PlanRole role, const std::string &reason) {
+    for (const TableDefinition *table : TablesFor(role))
+      plan.omitted.push_back({table->Name(), reason});
   };
   std::string nothingLit;
   if (materials.empty())
@@ -195,28 +214,23 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
       return std::string(what) + " is off (the manifest's \"lighting\" sets it false)";
     return std::string(what) + " is off for every lit material (each sets it false)";
   };
-  if (!has(TableKind::kE)) {
-    const std::string reason = offReason(options.compensation, options.defaultCompensation,
-                                         "--no-compensation", "energy compensation");
-    plan.omitted.push_back({"E", reason});
-    plan.omitted.push_back({"Eavg", reason});
-  }
-  if (!has(TableKind::kFavg)) {
-    if (!has(TableKind::kE)) {
-      plan.omitted.push_back({"Favg",
-                              "F_avg serves energy compensation only, and no material "
-                              "uses it"});
+  if (!has(PlanRole::kEnergyCompensation))
+    omit(PlanRole::kEnergyCompensation, offReason(options.compensation, options.defaultCompensation,
+                                                  "--no-compensation", "energy compensation"));
+  if (!has(PlanRole::kFresnelAverage)) {
+    if (!has(PlanRole::kEnergyCompensation)) {
+      omit(PlanRole::kFresnelAverage,
+           "F_avg serves energy compensation only, and no material uses it");
     } else {
       plan.schlickFavgFunction = litSchlickCompensated > 0;
-      plan.omitted.push_back(
-          {"Favg",
+      omit(PlanRole::kFresnelAverage,
            "every compensated material uses Schlick's Fresnel, whose F_avg = 20/21 F0 + 1/21 F90 "
-           "exactly: the Favg.h header carries that function instead of a table"});
+           "exactly: the Favg.h header carries that function instead of a table");
     }
   }
-  if (!has(TableKind::kDfg))
-    plan.omitted.push_back(
-        {"dfg", offReason(options.ibl, options.defaultIbl, "--no-ibl", "image-based lighting")});
+  if (!has(PlanRole::kImageBasedLighting))
+    omit(PlanRole::kImageBasedLighting,
+         offReason(options.ibl, options.defaultIbl, "--no-ibl", "image-based lighting"));
   return plan;
 }
 
@@ -247,8 +261,8 @@ std::string PlanJson(const BakePlan &plan) {
   for (const PlannedTable &t : plan.tables) {
     Json j;
     j["name"] = t.name;
-    j["table"] = TableName(t.kind);
-    if (t.kind == TableKind::kFavg) {
+    j["table"] = t.definition->Name();
+    if (t.definition->Role() == PlanRole::kFresnelAverage) {
       j["fresnel"] = ToString(t.fresnel);
       j["eta"] = CoveredJson(t.eta);
       if (t.fresnel == FresnelModel::kConductor) j["k"] = CoveredJson(t.k);
@@ -318,7 +332,7 @@ std::string DescribePlan(const BakePlan &plan) {
     s << "  " << t.name << "  " << t.x.count;
     if (!t.y.name.empty()) s << " x " << t.y.count;
     s << "  (";
-    if (t.kind == TableKind::kFavg)
+    if (t.definition->Role() == PlanRole::kFresnelAverage)
       s << ToString(t.fresnel);
     else
       s << ToString(t.ndf) << ", " << ToString(t.smith);

@@ -7,18 +7,13 @@
 #include <cstring>
 
 #include "lutbake/tables/storage.h"
+#include "lutbake/tables/table_definition.h"
 
 namespace lutbake {
 
-const char *TableName(TableKind kind) {
-  switch (kind) {
-    case TableKind::kE: return "E";
-    case TableKind::kEavg: return "Eavg";
-    case TableKind::kFavg: return "Favg";
-    case TableKind::kDfg: return "dfg";
-  }
-  return "?";
-}
+std::string Table::DefinitionName() const { return definition ? definition->Name() : ""; }
+
+std::string Table::Name() const { return name.empty() ? DefinitionName() : name; }
 
 std::string FormatDouble(double v) {
   char buffer[64];
@@ -120,9 +115,8 @@ Table ErrorMapOf(const Table &table) {
   map.values = StoredBounds(table, ValueType::kFloat32);
   map.errors.assign(table.errors.size(), 0.0);
   for (auto &[key, value] : map.metadata)
-    if (key == "table") value = std::string(TableName(table.kind)) + ".err";
-  map.metadata.emplace_back("content", "per-texel error bound of " +
-                                           std::string(TableName(table.kind)) +
+    if (key == "table") value = table.DefinitionName() + ".err";
+  map.metadata.emplace_back("content", "per-texel error bound of " + table.DefinitionName() +
                                            " (see errorBound); same layout and channels");
   return map;
 }

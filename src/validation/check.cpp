@@ -44,7 +44,8 @@ std::string Short(double v) {
 
 // A table as read from DIR, with everything the checks need.
 struct Loaded {
-  TableKind kind = TableKind::kE;
+  const TableDefinition *def = nullptr;
+  size_t index = 0;             // in AllTables(): the order of the checks
   Table table;                  // values of the primary file (EXR, else .bin, else .h)
   std::string primary;          // its path
   bool perTexelErrors = false;  // table.errors holds per-texel bounds (else errorMax)
@@ -53,13 +54,10 @@ struct Loaded {
   // The files state bounds of their stored values, rounding included
   // (metadata errorStorage, storage.h): no float rounding is allowed on top.
   bool boundsCoverStorage = false;
-  NdfKind ndf = NdfKind::kGgx;
-  SmithForm smith = SmithForm::kCorrelated;
-  FresnelModel fresnel = FresnelModel::kSchlick;
+  BakeSettings model;                 // the model the files state (ndf, smith, fresnel, ...)
   bool usable = false;                // metadata understood: the numeric checks can run
   std::vector<double> ref, refError;  // the quadrature at every texel, same layout as values
 
-  bool albedo() const { return kind != TableKind::kFavg; }
   // The bound a texel's value claims: its own, or the stated maximum.
   double Bound(size_t i) const { return perTexelErrors ? table.errors[i] : statedErrorMax; }
 };
@@ -96,24 +94,29 @@ class Checker {
   CheckReport Run() {
     const auto start = std::chrono::steady_clock::now();
     report_.dir = dir_;
-    for (TableKind kind : kAllTables) Load(kind);
+    for (size_t i = 0; i < AllTables().size(); ++i) Load(i);
     if (tables_.empty()) {
       Add(dir_, "tables", CheckStatus::kFail,
-          "no table files (E, Eavg, Favg, dfg as .exr, .bin or .h) found in " + dir_);
+          "no table files (" + TableNameList() + " as .exr, .bin or .h) found in " + dir_);
     } else {
       ComputeReferences();
-      for (auto &[kind, t] : tables_) {
+      for (auto &[index, t] : tables_) {
         if (!t.usable) continue;
         CheckFinite(t);
         CheckRange(t);
         CheckTexels(t);
         CheckPoints(t);
-        if (kind == TableKind::kEavg || kind == TableKind::kFavg) CheckMonotonic(t);
-        if (kind == TableKind::kFavg) CheckClosedForm(t);
+        CheckMonotonic(t);
+        CheckClosedForm(t);
       }
-      CheckIdentity();
-      CheckAverage();
-      CheckFurnace();
+      // The relations the definitions declare, each kind in turn.
+      for (auto &[index, t] : tables_)
+        if (const std::string &sum = t.def->Relations().channelsSumTo; !sum.empty())
+          CheckIdentity(sum, t);
+      for (auto &[index, t] : tables_)
+        if (const std::string &of = t.def->Relations().averageOf; !of.empty()) CheckAverage(of, t);
+      for (auto &[index, t] : tables_)
+        if (t.def->Relations().kullaConty) CheckFurnace(t.def->Relations().averageOf, t);
     }
     report_.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -136,8 +139,9 @@ class Checker {
     return false;
   }
 
-  void Load(TableKind kind) {
-    const std::string name = Name(kind);
+  void Load(size_t index) {
+    const TableDefinition &def = *AllTables()[index];
+    const std::string name = Name(def);
     const fs::path base = fs::path(dir_) / name;
     const std::string exrPath = base.string() + ".exr", binPath = base.string() + ".bin",
                       hPath = base.string() + ".h", errPath = base.string() + ".err.exr";
@@ -156,7 +160,7 @@ class Checker {
     };
     // A bake plan whose compensated materials all use Schlick writes Favg.h
     // with the closed form and no table (plan.h): nothing numeric to check.
-    if (kind == TableKind::kFavg && IsClosedFormHeader(hPath)) {
+    if (IsClosedFormHeader(hPath)) {
       report_.files.push_back(hPath);
       Add(name, "closed form", CheckStatus::kPass,
           hPath + ": Schlick's closed form F_avg = 20/21 F0 + 1/21 F90, no table (a bake plan's)");
@@ -168,8 +172,9 @@ class Checker {
     attempt(errPath, [&] { err = ReadExrTable(errPath); });
     const bool present = exr || bin || header || !problems.empty();
     if (!present) return;
-    Loaded &t = tables_[kind];
-    t.kind = kind;
+    Loaded &t = tables_[index];
+    t.def = &def;
+    t.index = index;
     for (const std::string &p : problems) Add(name, "metadata", CheckStatus::kFail, p);
 
     // The primary file: EXR, else .bin, else the header (whose metadata
@@ -235,17 +240,15 @@ class Checker {
   // The metadata: the table lutbake claims to have written. False when the
   // numeric checks cannot run on it.
   bool CheckMetadata(Loaded &t) {
-    const std::string name = Name(t.kind);
+    const std::string name = Name(*t.def);
     Table &table = t.table;
     std::vector<std::string> problems;
-    const auto meta = [&](const std::string &key) -> std::string {
-      const std::string *v = table.FindMetadata(key);
-      if (!v) problems.push_back("key '" + key + "' missing");
-      return v ? *v : std::string();
+    const auto meta = [&](const std::string &key) {
+      return RequiredMetadata(table, key, &problems);
     };
-    if (meta("table") != TableName(t.kind))
-      problems.push_back("table is not '" + std::string(TableName(t.kind)) + "'");
-    const int channels = t.kind == TableKind::kDfg ? 2 : 1;
+    if (meta("table") != t.def->Name())
+      problems.push_back("table is not '" + std::string(t.def->Name()) + "'");
+    const int channels = t.def->Channels();
     if (table.channels != channels)
       problems.push_back(std::to_string(table.channels) + " channels, expected " +
                          std::to_string(channels));
@@ -258,48 +261,14 @@ class Checker {
       problems.push_back("errorMax '" + errorMax + "' is not a non-negative number");
     if (meta("texelConvention").rfind("texel i of N holds the value at u = (i + 0.5) / N", 0) != 0)
       problems.push_back("texelConvention is not lutbake's (texel centres)");
-    if (t.albedo()) {
-      const std::string ndf = meta("ndf"), smith = meta("smith");
-      if (ndf != "ggx" && ndf != "beckmann") problems.push_back("ndf '" + ndf + "' unknown");
-      if (smith != "correlated" && smith != "separable")
-        problems.push_back("smith '" + smith + "' unknown");
-      t.ndf = ndf == "beckmann" ? NdfKind::kBeckmann : NdfKind::kGgx;
-      t.smith = smith == "separable" ? SmithForm::kSeparable : SmithForm::kCorrelated;
-      if (meta("alpha") != "alpha = perceptualRoughness^2")
-        problems.push_back("alpha is not perceptualRoughness^2");
-      const Axis &r = t.kind == TableKind::kEavg ? table.x : table.y;
-      if (r.name != "perceptualRoughness" || r.min < 0.0 || r.max > 1.0)
-        problems.push_back("the roughness axis is not perceptualRoughness within [0, 1]");
-      if (t.kind != TableKind::kEavg &&
-          (table.x.name != "mu" || table.x.min < 0.0 || table.x.max > 1.0))
-        problems.push_back("axis x is not mu within [0, 1]");
-      if (t.kind == TableKind::kEavg && table.is2D()) problems.push_back("Eavg is not 1D");
-      if (t.kind != TableKind::kEavg && !table.is2D()) problems.push_back(name + " is not 2D");
-    } else {
-      const std::string fresnel = meta("fresnel");
-      if (fresnel == "schlick" && table.x.name == "F0" && !table.is2D() && table.x.min >= 0.0 &&
-          table.x.max <= 1.0)
-        t.fresnel = FresnelModel::kSchlick;
-      else if (fresnel == "dielectric" && table.x.name == "eta" && !table.is2D() &&
-               table.x.min >= 0.0)
-        t.fresnel = FresnelModel::kDielectric;
-      else if (fresnel == "conductor" && table.x.name == "eta" && table.y.name == "k" &&
-               table.x.min >= 0.0 && table.y.min >= 0.0)
-        t.fresnel = FresnelModel::kConductor;
-      else
-        problems.push_back("fresnel '" + fresnel + "' with axes " + table.x.name + ", " +
-                           (table.y.name.empty() ? "none" : table.y.name) +
-                           " is not a Favg lutbake writes");
-    }
+    t.def->ReadModel(table, &t.model, &problems);
     if (!problems.empty()) {
       std::string detail = t.primary + ": ";
       for (size_t i = 0; i < problems.size(); ++i) detail += (i ? "; " : "") + problems[i];
       Add(name, "metadata", CheckStatus::kFail, detail);
       return false;
     }
-    std::string model = t.albedo()
-                            ? std::string(ToString(t.ndf)) + " " + std::string(ToString(t.smith))
-                            : "fresnel " + std::string(ToString(t.fresnel));
+    const std::string model = t.def->DescribeModel(t.model);
     Add(name, "metadata", CheckStatus::kPass,
         t.primary + ": " + std::to_string(table.width()) + " x " + std::to_string(table.height()) +
             ", " + model + ", " + DescribeAxis(table.x) +
@@ -313,7 +282,7 @@ class Checker {
   void CheckFormats(const Loaded &t, const std::optional<Table> &exr,
                     const std::optional<Table> &bin, const std::optional<HeaderValues> &header,
                     const std::optional<Table> &err) {
-    const std::string name = Name(t.kind);
+    const std::string name = Name(*t.def);
     std::vector<std::string> compared, problems;
     const auto sameValues = [&](const std::vector<double> &a, const std::string &what,
                                 bool half = false) {
@@ -394,10 +363,7 @@ class Checker {
   // ---- the reference ---------------------------------------------------
 
   BakeSettings ReferenceSettings(const Loaded &t) const {
-    BakeSettings s;
-    s.ndf = t.ndf;
-    s.smith = t.smith;
-    s.fresnel = t.fresnel;
+    BakeSettings s = t.model;
     // The adaptive Gauss-Kronrod reference, not the bake's default panel
     // quadrature: an independent method (another parameterisation, another
     // rule, another error estimate) judges the table.
@@ -413,14 +379,7 @@ class Checker {
 
   // The value (up to 2 channels) at a point of a table's axes.
   PointValue Reference(const Loaded &t, double x, double y) const {
-    const BakeSettings s = ReferenceSettings(t);
-    switch (t.kind) {
-      case TableKind::kE:
-      case TableKind::kDfg: return EvaluateAlbedo(t.kind, s, x, y * y, 0);
-      case TableKind::kEavg: return EvaluateAlbedoAverage(s, x * x, 0);
-      case TableKind::kFavg: return EvaluateFresnelAverage(t.fresnel, x, y);
-    }
-    return {};
+    return t.def->Evaluate(ReferenceSettings(t), x, y);
   }
 
   // Every texel of every usable table, and the random points, in one
@@ -435,6 +394,7 @@ class Checker {
     std::vector<Task> tasks;
     for (auto &[kind, t] : tables_) {
       if (!t.usable) continue;
+      const TableDefinition &def = *t.def;
       const size_t texels = static_cast<size_t>(t.table.width()) * t.table.height();
       t.ref.assign(texels * t.table.channels, 0.0);
       t.refError.assign(texels * t.table.channels, 0.0);
@@ -444,7 +404,7 @@ class Checker {
                          t.table.y.TexelCenter(static_cast<int>(i / t.table.width())),
                          &refTexel_[kind][i]});
       // Random points over the whole axis ranges, edges (where lookups clamp) included.
-      RandomStream random(HashValues({options_.seed, static_cast<uint64_t>(kind)}));
+      RandomStream random(HashValues({options_.seed, def.SeedId()}));
       points_[kind].resize(static_cast<size_t>(options_.randomPoints));
       for (RandomPoint &p : points_[kind]) {
         p.x = t.table.x.min + (t.table.x.max - t.table.x.min) * random.NextDouble();
@@ -456,7 +416,7 @@ class Checker {
     std::atomic<size_t> done{0};
     // Most expensive first (E_avg integrates a whole row), for balance.
     std::stable_sort(tasks.begin(), tasks.end(), [](const Task &a, const Task &b) {
-      return (a.t->kind == TableKind::kEavg) > (b.t->kind == TableKind::kEavg);
+      return a.t->def->ReferenceCost() > b.t->def->ReferenceCost();
     });
     tbb::parallel_for(size_t{0}, tasks.size(), [&](size_t i) {
       const Task &task = tasks[i];
@@ -480,7 +440,7 @@ class Checker {
   // ---- single tables ---------------------------------------------------
 
   void CheckFinite(const Loaded &t) {
-    const std::string name = Name(t.kind);
+    const std::string name = Name(*t.def);
     size_t bad = 0, first = 0;
     for (size_t i = 0; i < t.table.values.size(); ++i)
       if (!std::isfinite(t.table.values[i]) || !std::isfinite(t.table.errors[i])) {
@@ -502,11 +462,13 @@ class Checker {
   }
 
   void CheckRange(const Loaded &t) {
-    const std::string name = Name(t.kind);
+    const std::string name = Name(*t.def);
     const Table &table = t.table;
     // Float rounding: a value <= 1 in double stays <= 1 in float; a sum of
     // two rounded values may exceed 1 by one ulp.
     constexpr double kSumSlack = 0x1p-23;
+    const ValueClaim claim = t.def->Range(t.model);
+    const std::vector<std::string> meanings = t.def->ChannelMeanings();
     double worst = 0.0;
     std::string what;
     std::vector<std::pair<std::string, double>> at;
@@ -522,29 +484,34 @@ class Checker {
       };
       for (int c = 0; c < table.channels; ++c) {
         const double v = table.values[i * table.channels + c];
-        const std::string label = table.channels == 2 ? (c == 0 ? "A" : "B") : name;
-        note(-v, label + " < 0");
-        note(v - 1.0, label + " > 1");
+        const std::string label = table.channels == 1 ? name : meanings[c];
+        note(claim.lower - v, label + " < " + Short(claim.lower));
+        if (std::isfinite(claim.upper)) note(v - claim.upper, label + " > " + Short(claim.upper));
         note(-table.errors[i * table.channels + c], "a negative error bound");
       }
-      if (table.channels == 2)
-        note(table.values[2 * i] + table.values[2 * i + 1] - 1.0 - kSumSlack - 2.0 * t.storageError,
-             "A + B > 1");
+      if (claim.sumAtMostOne) {
+        double sum = 0.0;
+        std::string sumLabel;
+        for (int c = 0; c < table.channels; ++c) {
+          sum += table.values[i * table.channels + c];
+          sumLabel += (c ? " + " : "") + meanings[c];
+        }
+        note(sum - 1.0 - kSumSlack - 2.0 * t.storageError, sumLabel + " > 1");
+      }
     }
     if (worst > 0.0) {
       Add(name, "range", CheckStatus::kFail, what + " by " + Short(worst) + " at " + Where(at),
           worst, 0.0, at);
       return;
     }
-    double lo = 1.0, hi = 0.0;
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
     for (double v : table.values) lo = std::min(lo, v), hi = std::max(hi, v);
     Add(name, "range", CheckStatus::kPass,
-        std::string(table.channels == 2 ? "A, B >= 0 and A + B <= 1" : "in [0, 1]") +
-            ": values from " + Short(lo) + " to " + Short(hi));
+        claim.text + ": values from " + Short(lo) + " to " + Short(hi));
   }
 
   void CheckTexels(const Loaded &t) {
-    const std::string name = Name(t.kind);
+    const std::string name = Name(*t.def);
     const Table &table = t.table;
     const size_t texels = static_cast<size_t>(table.width()) * table.height();
     double worst = -1.0, worstAllowed = 0.0, worstReal = 0.0, realMax = 0.0, realSq = 0.0;
@@ -597,12 +564,12 @@ class Checker {
   }
 
   void CheckPoints(const Loaded &t) {
-    const std::string name = Name(t.kind);
+    const std::string name = Name(*t.def);
     const Table &table = t.table;
     double worstLookup = 0.0, worstInterp = 0.0, worstExcess = -1.0, excessAllowed = 0.0,
            excessValue = 0.0;
     std::vector<std::pair<std::string, double>> atLookup, atExcess;
-    for (const RandomPoint &p : points_.at(t.kind))
+    for (const RandomPoint &p : points_.at(t.index))
       for (int c = 0; c < table.channels; ++c) {
         const double lookup = Lookup(table, p.x, p.y, c);
         const double lookupRef = Lookup(table, t.ref, p.x, p.y, c);
@@ -627,7 +594,7 @@ class Checker {
         }
       }
     const std::string detail =
-        std::to_string(points_.at(t.kind).size()) +
+        std::to_string(points_.at(t.index).size()) +
         " random points, bilinear lookup against the quadrature at the point: max |lookup - "
         "truth| " +
         Short(worstLookup) + " at " + Where(atLookup) +
@@ -642,27 +609,17 @@ class Checker {
   }
 
   void CheckMonotonic(const Loaded &t) {
-    const std::string name = Name(t.kind);
+    const std::string name = Name(*t.def);
     const Table &table = t.table;
-    int direction = 0;  // +1 non-decreasing, -1 non-increasing along x
-    double from = table.x.min;
-    std::string claim;
-    if (t.kind == TableKind::kEavg) {
-      direction = -1;
-      claim = "E_avg non-increasing in roughness";
-    } else if (t.fresnel == FresnelModel::kSchlick) {
-      direction = +1;
-      claim = "F_avg increasing in F0";
-    } else if (t.fresnel == FresnelModel::kDielectric) {
-      direction = +1;
-      from = 1.0;
-      claim = "F_avg increasing in eta for eta >= 1";
-    } else {
-      Add(name, "monotonic", CheckStatus::kSkipped,
-          "conductor F_avg is not monotonic in k for small eta (eta 0.1: it falls as k grows "
-          "from 0), so nothing is claimed");
+    const std::optional<MonotonicClaim> claimed = t.def->Monotonic(t.model);
+    if (!claimed) return;
+    if (claimed->direction == 0) {
+      Add(name, "monotonic", CheckStatus::kSkipped, claimed->skipped);
       return;
     }
+    const int direction = claimed->direction;  // +1 non-decreasing, -1 non-increasing along x
+    const double from = claimed->from;
+    const std::string &claim = claimed->claim;
     double worst = 0.0, worstAllowed = 0.0, worstExcess = 0.0;
     std::vector<std::pair<std::string, double>> at;
     int pairs = 0;
@@ -694,52 +651,53 @@ class Checker {
   }
 
   void CheckClosedForm(const Loaded &t) {
-    if (t.fresnel != FresnelModel::kSchlick) return;
+    const std::optional<ClosedForm> closed = t.def->Closed(t.model);
+    if (!closed) return;
     double worst = 0.0;
     std::vector<std::pair<std::string, double>> at;
-    for (int x = 0; x < t.table.width(); ++x) {
-      const double f0 = t.table.x.TexelCenter(x);
-      const double exact = f0 * (20.0 / 21.0) + 1.0 / 21.0;
-      const double excess =
-          std::abs(t.table.values[x] - exact) - FloatRounding(exact) - t.storageError - 1e-15;
-      if (excess > worst) worst = excess, at = At(t.table, f0, 0.0);
-    }
+    for (int y = 0; y < t.table.height(); ++y)
+      for (int x = 0; x < t.table.width(); ++x) {
+        const double px = t.table.x.TexelCenter(x), py = t.table.y.TexelCenter(y);
+        const double exact = closed->value(px, py);
+        const double excess = std::abs(t.table.values[t.table.index(x, y, 0)] - exact) -
+                              FloatRounding(exact) - t.storageError - 1e-15;
+        if (excess > worst) worst = excess, at = At(t.table, px, py);
+      }
     if (worst > 0.0)
-      Add("Favg", "closed form", CheckStatus::kFail,
-          "Schlick F_avg departs from 20/21 F0 + 1/21 by " + Short(worst) +
-              " beyond float "
-              "rounding at " +
-              Where(at),
+      Add(Name(*t.def), "closed form", CheckStatus::kFail,
+          closed->subject + " departs from " + closed->formula + " by " + Short(worst) +
+              " beyond float rounding at " + Where(at),
           worst, 0.0, at);
     else
-      Add("Favg", "closed form", CheckStatus::kPass,
-          "Schlick F_avg = 20/21 F0 + 1/21 at every texel, to float rounding");
+      Add(Name(*t.def), "closed form", CheckStatus::kPass,
+          closed->subject + " = " + closed->formula + " at every texel, to float rounding");
   }
 
   // ---- across tables ---------------------------------------------------
 
-  const Loaded *Usable(TableKind kind) const {
-    const auto it = tables_.find(kind);
-    return it != tables_.end() && it->second.usable ? &it->second : nullptr;
+  // The usable table of this set whose definition is called `name`.
+  const Loaded *Usable(const std::string &name) const {
+    for (const auto &[index, t] : tables_)
+      if (t.usable && name == t.def->Name()) return &t;
+    return nullptr;
   }
 
   // Same NDF and Smith form, or a failed check that says they differ.
   bool SameModel(const Loaded &a, const Loaded &b, const std::string &subject,
                  const std::string &check) {
-    if (a.ndf == b.ndf && a.smith == b.smith) return true;
+    if (a.def->SameModel(a.model, b.model)) return true;
     Add(subject, check, CheckStatus::kFail,
-        Name(a.kind) + " is " + std::string(ToString(a.ndf)) + " " +
-            std::string(ToString(a.smith)) + " but " + Name(b.kind) + " is " +
-            std::string(ToString(b.ndf)) + " " + std::string(ToString(b.smith)) +
-            ": the set mixes models");
+        Name(*a.def) + " is " + a.def->DescribeModel(a.model) + " but " + Name(*b.def) + " is " +
+            b.def->DescribeModel(b.model) + ": the set mixes models");
     return false;
   }
 
   // A + B = E at E's texel centres, dfg interpolated there.
-  void CheckIdentity() {
-    const Loaded *e = Usable(TableKind::kE), *d = Usable(TableKind::kDfg);
-    if (!e || !d) return;
-    if (!SameModel(*e, *d, "E+dfg" + suffix_, "identity")) return;
+  void CheckIdentity(const std::string &sumName, const Loaded &channels) {
+    const Loaded *e = Usable(sumName), *d = &channels;
+    if (!e || !d->usable) return;
+    const std::string subject = sumName + "+" + d->def->Name() + suffix_;
+    if (!SameModel(*e, *d, subject, "identity")) return;
     const Table &te = e->table, &td = d->table;
     double worst = 0.0, worstExcess = -1.0, excessValue = 0, excessAllowed = 0;
     std::vector<std::pair<std::string, double>> at, atExcess;
@@ -764,26 +722,27 @@ class Checker {
     const std::string where =
         "at E's " + std::to_string(te.width() * te.height()) + " texel centres (dfg interpolated)";
     if (worstExcess > 0.0)
-      Add("E+dfg" + suffix_, "identity", CheckStatus::kFail,
+      Add(subject, "identity", CheckStatus::kFail,
           "A + B - E = " + Short(excessValue) + " at " + Where(atExcess) + ", more than the " +
               Short(excessAllowed) + " that the tables' bounds and interpolation allow (" + where +
               ")",
           excessValue, excessAllowed, atExcess);
     else
-      Add("E+dfg" + suffix_, "identity", CheckStatus::kPass,
+      Add(subject, "identity", CheckStatus::kPass,
           "A + B = E " + where + ": max |A + B - E| " + Short(worst) + " at " + Where(at), worst,
           0.0, at);
   }
 
   // E_avg = 2 integral E mu dmu from E's rows, where E's rows and E_avg's
   // texels sit at the same roughness.
-  void CheckAverage() {
-    const Loaded *e = Usable(TableKind::kE), *a = Usable(TableKind::kEavg);
-    if (!e || !a) return;
-    if (!SameModel(*e, *a, "E+Eavg" + suffix_, "average")) return;
+  void CheckAverage(const std::string &ofName, const Loaded &average) {
+    const Loaded *e = Usable(ofName), *a = &average;
+    if (!e || !a->usable) return;
+    const std::string subject = ofName + "+" + a->def->Name() + suffix_;
+    if (!SameModel(*e, *a, subject, "average")) return;
     const Table &te = e->table, &ta = a->table;
     if (DescribeAxis(te.y) != DescribeAxis(ta.x) || te.x.min != 0.0 || te.x.max != 1.0) {
-      Add("E+Eavg" + suffix_, "average", CheckStatus::kSkipped,
+      Add(subject, "average", CheckStatus::kSkipped,
           "E's rows and E_avg's texels are not at the same roughness, or E does not span mu in "
           "[0, 1]");
       return;
@@ -811,13 +770,13 @@ class Checker {
         atExcess = At(ta, r, 0.0);
     }
     if (worstExcess > 0.0)
-      Add("E+Eavg" + suffix_, "average", CheckStatus::kFail,
+      Add(subject, "average", CheckStatus::kFail,
           "E_avg differs from 2 sum E mu / N over E's row by " + Short(excessValue) + " at " +
               Where(atExcess) + ", more than the " + Short(excessAllowed) +
               " the bounds and the midpoint rule on exact texels allow",
           excessValue, excessAllowed, atExcess);
     else
-      Add("E+Eavg" + suffix_, "average", CheckStatus::kPass,
+      Add(subject, "average", CheckStatus::kPass,
           "E_avg against the midpoint rule 2 sum E mu / N over each row of E: max deviation " +
               Short(worst) + " at " + Where(at),
           worst, 0.0, at);
@@ -828,13 +787,14 @@ class Checker {
   //   E(mu) + integral f_ms cos = E_o + (1 - E_o) (1 - E~) / (1 - E_avg),
   //   E~ = 2 integral_0^1 E_lookup(mu_i) mu_i dmu_i (exact for a piecewise-linear lookup),
   // so the deviation from 1 is d = (1 - E_o) (E_avg - E~) / (1 - E_avg).
-  void CheckFurnace() {
-    const Loaded *e = Usable(TableKind::kE), *a = Usable(TableKind::kEavg);
-    if (!e || !a) return;
-    if (!SameModel(*e, *a, "E+Eavg" + suffix_, "furnace")) return;
+  void CheckFurnace(const std::string &ofName, const Loaded &average) {
+    const Loaded *e = Usable(ofName), *a = &average;
+    if (!e || !a->usable) return;
+    const std::string subject = ofName + "+" + a->def->Name() + suffix_;
+    if (!SameModel(*e, *a, subject, "furnace")) return;
     const Table &te = e->table, &ta = a->table;
     if (te.x.min != 0.0 || te.x.max != 1.0) {
-      Add("E+Eavg" + suffix_, "furnace", CheckStatus::kSkipped,
+      Add(subject, "furnace", CheckStatus::kSkipped,
           "E does not span mu in [0, 1], so integral f_ms cos cannot be formed");
       return;
     }
@@ -901,13 +861,13 @@ class Checker {
       detail += "; E_avg is 1 at r <= " + Short(undefinedBelow) +
                 ": f_ms is 0 / 0 there and an engine must guard it";
     if (worstExcess > 0.0)
-      Add("E+Eavg" + suffix_, "furnace", CheckStatus::kFail,
+      Add(subject, "furnace", CheckStatus::kFail,
           "the baked deviation departs from that of exact texels by " + Short(excessValue) +
               " at " + Where(atExcess) + ", more than the " + Short(excessAllowed) +
               " the tables' bounds allow. " + detail,
           excessValue, excessAllowed, atExcess);
     else
-      Add("E+Eavg" + suffix_, "furnace", CheckStatus::kPass, detail, worst, 0.0, at);
+      Add(subject, "furnace", CheckStatus::kPass, detail, worst, 0.0, at);
   }
 
   struct RandomPoint {
@@ -915,15 +875,16 @@ class Checker {
     PointValue truth;
   };
 
-  std::string Name(TableKind kind) const { return TableName(kind) + suffix_; }
+  std::string Name(const TableDefinition &def) const { return def.Name() + suffix_; }
 
   std::string dir_;
   CheckOptions options_;
   std::string suffix_;
   CheckReport report_;
-  std::map<TableKind, Loaded> tables_;
-  std::map<TableKind, std::vector<PointValue>> refTexel_;
-  std::map<TableKind, std::vector<RandomPoint>> points_;
+  // Keyed by the index in AllTables(), so that the checks run in its order.
+  std::map<size_t, Loaded> tables_;
+  std::map<size_t, std::vector<PointValue>> refTexel_;
+  std::map<size_t, std::vector<RandomPoint>> points_;
 };
 
 }  // namespace
@@ -933,8 +894,14 @@ CheckReport CheckBakedSet(const std::string &dir, const CheckOptions &options) {
   if (!fs::is_directory(dir, ec)) throw IoError(dir + " is not a directory");
   // A bake plan may write variants (E_beckmann, Favg_dielectric, ...): each
   // suffix is checked as a set of its own.
-  static const std::regex kTableFile(
-      R"(^(Eavg|Favg|dfg|E)(_[A-Za-z0-9_]+)?(\.err)?\.(exr|bin|h)$)");
+  // Names longest first, so that "Eavg_x" is Eavg with suffix "_x", not E.
+  std::vector<std::string> names;
+  for (const TableDefinition *table : AllTables()) names.push_back(table->Name());
+  std::sort(names.begin(), names.end(),
+            [](const std::string &a, const std::string &b) { return a.size() > b.size(); });
+  std::string alternatives;
+  for (const std::string &n : names) alternatives += (alternatives.empty() ? "" : "|") + n;
+  const std::regex kTableFile("^(" + alternatives + R"()(_[A-Za-z0-9_]+)?(\.err)?\.(exr|bin|h)$)");
   std::set<std::string> suffixes;
   for (const auto &entry : fs::directory_iterator(dir, ec)) {
     std::smatch m;

@@ -8,48 +8,45 @@
 #include <sstream>
 #include <thread>
 
-#include "lutbake/integrators/reference_integrator.h"
-
 namespace lutbake {
 
 namespace {
-
-// Reference values of every texel, [texel][channel].
-std::vector<std::array<double, 2>> ReferenceValues(const ReportSettings &s, TableKind kind,
-                                                   const Table &layout) {
-  const size_t texels = static_cast<size_t>(layout.width()) * layout.height();
-  std::vector<std::array<double, 2>> ref(texels);
-  tbb::parallel_for(size_t(0), texels, [&](size_t t) {
-    const int ix = static_cast<int>(t % layout.width()), iy = static_cast<int>(t / layout.width());
-    if (kind == TableKind::kEavg) {
-      const double r = layout.x.TexelCenter(ix);
-      ref[t] = {IntegrateReferenceAlbedoAverage(Ndf{s.ndf, r * r}, s.smith, 1e-11).value, 0.0};
-      return;
-    }
-    const double r = layout.y.TexelCenter(iy);
-    const ReferenceAlbedo a =
-        IntegrateReferenceAlbedo(Ndf{s.ndf, r * r}, s.smith, layout.x.TexelCenter(ix), 1e-12);
-    ref[t] = {kind == TableKind::kDfg ? a.A : a.E, a.B};
-  });
-  return ref;
-}
 
 BakeSettings BaseSettings(const ReportSettings &s) {
   BakeSettings b;
   b.ndf = s.ndf;
   b.smith = s.smith;
-  b.sizeE = b.sizeEavg = b.sizeDfg = b.sizeFavg = s.size;
+  b.size = s.size;
   b.seed = s.seed;
   b.replicates = kDefaultReplicates;
   return b;
 }
 
-ReportRow Measure(TableKind kind, const BakeSettings &b,
+// Reference values of every texel, [texel][channel]: the adaptive
+// Gauss-Kronrod quadrature at its own default tolerance (1e-12 for a point,
+// 1e-11 for an average), independent of the panel rule and the samplers.
+std::vector<std::array<double, 2>> ReferenceValues(const ReportSettings &s,
+                                                   const TableDefinition &table,
+                                                   const Table &layout) {
+  BakeSettings reference = BaseSettings(s);
+  reference.estimator = Estimator::kAdaptiveQuadrature;
+  const size_t texels = static_cast<size_t>(layout.width()) * layout.height();
+  std::vector<std::array<double, 2>> ref(texels);
+  tbb::parallel_for(size_t(0), texels, [&](size_t t) {
+    const int ix = static_cast<int>(t % layout.width()), iy = static_cast<int>(t / layout.width());
+    const PointValue v =
+        table.Evaluate(reference, layout.x.TexelCenter(ix), layout.y.TexelCenter(iy));
+    ref[t] = {v.value[0], v.value[1]};
+  });
+  return ref;
+}
+
+ReportRow Measure(const TableDefinition &table, const BakeSettings &b,
                   const std::vector<std::array<double, 2>> &ref) {
   BakeStats stats;
-  const Table t = BakeTable(kind, b, {}, &stats);
+  const Table t = BakeTable(table, b, {}, &stats);
   ReportRow row;
-  row.table = kind;
+  row.table = &table;
   row.estimator = b.estimator;
   row.seconds = stats.seconds;
   const size_t texels = ref.size();
@@ -97,13 +94,12 @@ std::vector<ReportRow> RunReport(const ReportSettings &s, const ReportProgressFn
   std::vector<ReportRow> rows;
   const double share = s.budgetSeconds / static_cast<double>(std::max<size_t>(
                                              1, s.tables.size() * s.estimators.size()));
-  for (TableKind kind : s.tables) {
-    if (progress) progress(std::string("reference values of ") + TableName(kind));
+  for (const TableDefinition *table : s.tables) {
+    if (progress) progress(std::string("reference values of ") + table->Name());
     // The layout (axes) of the report table, as BakeTable makes it.
     Table layout;
-    layout.x = kind == TableKind::kEavg ? RoughnessAxis(s.size) : MuAxis(s.size);
-    layout.y = kind == TableKind::kEavg ? LinearAxis("", 0.0, 1.0, 1) : RoughnessAxis(s.size);
-    const std::vector<std::array<double, 2>> ref = ReferenceValues(s, kind, layout);
+    DefaultAxes(*table, BaseSettings(s), &layout.x, &layout.y);
+    const std::vector<std::array<double, 2>> ref = ReferenceValues(s, *table, layout);
     for (Estimator estimator : s.estimators) {
       BakeSettings b = BaseSettings(s);
       b.estimator = estimator;
@@ -124,12 +120,12 @@ std::vector<ReportRow> RunReport(const ReportSettings &s, const ReportProgressFn
         if (progress) {
           char line[160];
           std::snprintf(line, sizeof line, "%s %-11s %s %-10.3g spent %6.1f s of %.1f s",
-                        TableName(kind), std::string(ToString(estimator)).c_str(),
+                        table->Name(), std::string(ToString(estimator)).c_str(),
                         quadrature ? "tolerance" : "samples  ",
                         quadrature ? b.tolerance : static_cast<double>(b.samples), spent, share);
           progress(line);
         }
-        ReportRow row = Measure(kind, b, ref);
+        ReportRow row = Measure(*table, b, ref);
         row.tolerance = quadrature ? b.tolerance : 0.0;
         last = row.seconds;
         spent += row.seconds;
@@ -145,7 +141,7 @@ std::string ReportCsv(const std::vector<ReportRow> &rows) {
   out << "table,estimator,samples_per_texel,tolerance,seconds,max_error,rms_error,"
          "grazing_column_max,smoothest_row_max,max_bound,within_bound\n";
   for (const ReportRow &r : rows) {
-    out << TableName(r.table) << ',' << ToString(r.estimator) << ','
+    out << r.table->Name() << ',' << ToString(r.estimator) << ','
         << Format("%.17g", r.samplesPerTexel) << ',' << Format("%.3g", r.tolerance) << ','
         << Format("%.6g", r.seconds) << ',' << Format("%.6e", r.maxError) << ','
         << Format("%.6e", r.rmsError) << ',' << Format("%.6e", r.grazingColumnMax) << ','
@@ -166,8 +162,8 @@ std::string ReportMarkdown(const ReportSettings &s, const std::vector<ReportRow>
          "Sampled estimators: 4 replicates; samples per texel as listed. The two quadratures "
          "(quadrature: the default panel rule; adaptive: nested adaptive Gauss-Kronrod): "
          "integrand evaluations per texel at the tolerance listed.\n\n";
-  for (TableKind kind : s.tables) {
-    out << "## " << TableName(kind) << "\n\n### Time to reach a max error\n\n"
+  for (const TableDefinition *kind : s.tables) {
+    out << "## " << kind->Name() << "\n\n### Time to reach a max error\n\n"
         << "| estimator | 1e-3 | 1e-4 | 1e-5 | 1e-6 | best max error (time) |\n"
         << "|---|---|---|---|---|---|\n";
     for (Estimator e : s.estimators) {
@@ -221,7 +217,9 @@ std::string ReportSvg(const ReportSettings &s, const std::vector<ReportRow> &row
       << kPanelHeight << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   for (size_t p = 0; p < s.tables.size(); ++p) {
-    const TableKind kind = s.tables[p];
+    const TableDefinition *kind = s.tables[p];
+    Axis layoutX, layoutY;
+    DefaultAxes(*kind, BaseSettings(s), &layoutX, &layoutY);
     const double x0 = kPanelWidth * static_cast<double>(p) + kLeft;
     const double plotW = kPanelWidth - kLeft - kRight, plotH = kPanelHeight - kTop - kBottom;
     // Decade-aligned log ranges over this table's rows.
@@ -245,8 +243,8 @@ std::string ReportSvg(const ReportSettings &s, const std::vector<ReportRow> &row
       return kTop + plotH * (le1 - std::log10(std::max(e, 1e-10))) / (le1 - le0);
     };
     out << "<text x=\"" << x0 + plotW / 2 << "\" y=\"20\" text-anchor=\"middle\" "
-        << "font-size=\"14\">" << TableName(kind) << " (" << ToString(s.ndf) << ", " << s.size
-        << "x" << (kind == TableKind::kEavg ? 1 : s.size) << "): max error against time</text>\n"
+        << "font-size=\"14\">" << kind->Name() << " (" << ToString(s.ndf) << ", " << s.size << "x"
+        << layoutY.count << "): max error against time</text>\n"
         << "<rect x=\"" << x0 << "\" y=\"" << kTop << "\" width=\"" << plotW << "\" height=\""
         << plotH << "\" fill=\"none\" stroke=\"black\"/>\n";
     for (double d = lt0; d <= lt1; d += 1) {

@@ -43,19 +43,19 @@ void ExpectHeadersPass(const fs::path &dir, const std::string &includes,
   LUTBAKE_EXPECT_COMPILES_AND_RUNS(dir, "c++17", "c++20");
 }
 
-Table SmallTable(TableKind kind, int size = 8) {
+Table SmallTable(const TableDefinition *kind, int size = 8) {
   BakeSettings s;
-  s.sizeE = s.sizeEavg = s.sizeFavg = s.sizeDfg = size;
+  s.size = size;
   s.samples = 64;
   s.commandLine = "lutbake bake --test";
-  return BakeTable(kind, s);
+  return BakeTable(*kind, s);
 }
 
 TEST(ExrWriter, ReadsBackThroughOpenImageIO) {
   const fs::path dir = TempDir("exr");
-  for (TableKind kind : kAllTables) {
+  for (const TableDefinition *kind : AllTables()) {
     const Table t = SmallTable(kind, 6);
-    const std::string path = (dir / (std::string(TableName(kind)) + ".exr")).string();
+    const std::string path = (dir / (std::string(kind->Name()) + ".exr")).string();
     MakeExrWriter()->Write(t, path, {});
     auto in = OIIO::ImageInput::open(path);
     ASSERT_TRUE(in) << OIIO::geterror();
@@ -65,7 +65,7 @@ TEST(ExrWriter, ReadsBackThroughOpenImageIO) {
     ASSERT_EQ(spec.nchannels, t.channels);
     EXPECT_EQ(spec.format, OIIO::TypeDesc::FLOAT);
     for (int c = 0; c < t.channels; ++c) EXPECT_EQ(spec.channelnames[c], t.channelNames[c]);
-    EXPECT_EQ(spec.get_string_attribute("table"), TableName(kind));
+    EXPECT_EQ(spec.get_string_attribute("table"), kind->Name());
     EXPECT_EQ(spec.get_string_attribute("commandLine"), "lutbake bake --test");
     EXPECT_FALSE(spec.get_string_attribute("texelConvention").empty());
     // errorMax bounds the stored float32 values: the largest integration
@@ -86,7 +86,7 @@ TEST(ExrWriter, ReadsBackThroughOpenImageIO) {
 
 TEST(ExrWriter, SameTableGivesSameBytes) {
   const fs::path dir = TempDir("exrbytes");
-  const Table t = SmallTable(TableKind::kDfg);
+  const Table t = SmallTable(&TableNamed("dfg"));
   MakeExrWriter()->Write(t, (dir / "a.exr").string(), {});
   MakeExrWriter()->Write(t, (dir / "b.exr").string(), {});
   std::ifstream a(dir / "a.exr", std::ios::binary), b(dir / "b.exr", std::ios::binary);
@@ -99,7 +99,7 @@ TEST(ExrWriter, SameTableGivesSameBytes) {
 
 TEST(BinaryWriter, RoundTrip) {
   const fs::path dir = TempDir("bin");
-  for (TableKind kind : kAllTables) {
+  for (const TableDefinition *kind : AllTables()) {
     const Table t = SmallTable(kind, 5);
     const std::string path = (dir / "t.bin").string();
     MakeBinaryWriter()->Write(t, path, {});
@@ -123,7 +123,7 @@ TEST(BinaryWriter, RoundTrip) {
       EXPECT_EQ(back.errors[i], static_cast<double>(static_cast<float>(back.errors[i])));
     }
     ASSERT_NE(back.FindMetadata("table"), nullptr);
-    EXPECT_EQ(*back.FindMetadata("table"), TableName(kind));
+    EXPECT_EQ(*back.FindMetadata("table"), kind->Name());
   }
   // A truncated file is refused, not misread.
   std::string bytes;
@@ -143,34 +143,33 @@ TEST(CppHeaderWriter, CompilesWithWerrorAndLooksUpExactly) {
   options.headerNamespace = "engine::luts";
   std::string checks;
   char line[512];
-  for (TableKind kind : kAllTables) {
+  for (const TableDefinition *kind : AllTables()) {
     // A size that is not a power of two, so texel centres are not exact in float.
     const Table t = SmallTable(kind, 10);
-    MakeCppHeaderWriter()->Write(t, (dir / (std::string(TableName(kind)) + ".h")).string(),
-                                 options);
+    MakeCppHeaderWriter()->Write(t, (dir / (std::string(kind->Name()) + ".h")).string(), options);
     for (int y = 0; y < t.height(); ++y)
       for (int x = 0; x < t.width(); ++x) {
         const float fx = static_cast<float>((x + 0.5) / t.width());
         const float fy = static_cast<float>((y + 0.5) / t.height());
         for (int c = 0; c < t.channels; ++c) {
           const float expected = static_cast<float>(t.value(x, y, c));
-          if (kind == TableKind::kDfg)
+          if (kind == &TableNamed("dfg"))
             std::snprintf(line, sizeof line,
                           "  fail += engine::luts::lookup_dfg(%.9gf, %.9gf)[%d] != %.9gf;\n", fx,
                           fy, c, expected);
-          else if (kind == TableKind::kE)
+          else if (kind == &TableNamed("E"))
             std::snprintf(line, sizeof line,
                           "  fail += engine::luts::lookup_E(%.9gf, %.9gf) != %.9gf;\n", fx, fy,
                           expected);
           else
             std::snprintf(line, sizeof line, "  fail += engine::luts::lookup_%s(%.9gf) != %.9gf;\n",
-                          TableName(kind), fx, expected);
+                          kind->Name(), fx, expected);
           checks += line;
         }
       }
   }
   // Between centres and outside the range: bilinear and clamped.
-  const Table e = SmallTable(TableKind::kE, 10);
+  const Table e = SmallTable(&TableNamed("E"), 10);
   const double mid = 0.5 * (e.value(2, 3) + e.value(3, 3));
   std::snprintf(line, sizeof line,
                 "  fail += std::fabs(engine::luts::lookup_E(0.3f, 0.35f) - %.9gf) > 1e-6f;\n", mid);
@@ -181,7 +180,7 @@ TEST(CppHeaderWriter, CompilesWithWerrorAndLooksUpExactly) {
   checks += "  fail += !(engine::luts::lookup_E(std::nanf(\"\"), 0.5f) >= 0.0f);\n";
   // The conventions as constants, checked at compile time, and a command
   // line with quotes, a backslash and a newline kept exactly.
-  Table quoted = SmallTable(TableKind::kEavg, 3);
+  Table quoted = SmallTable(&TableNamed("Eavg"), 3);
   quoted.name = "Eavg_quoted";
   for (auto &[key, value] : quoted.metadata)
     if (key == "commandLine") value = "lutbake bake --out 'a \"b\"\\c'\n--tables Eavg";
@@ -218,9 +217,9 @@ TEST(CppHeaderWriter, HalfStorageRoundsOnceAndSaysBy) {
   options.headerStorage = HeaderStorage::kHalf;
   std::string checks;
   char line[512];
-  for (TableKind kind : {TableKind::kE, TableKind::kDfg}) {
+  for (const TableDefinition *kind : {&TableNamed("E"), &TableNamed("dfg")}) {
     const Table t = SmallTable(kind, 10);
-    const std::string path = (dir / (std::string(TableName(kind)) + ".h")).string();
+    const std::string path = (dir / (std::string(kind->Name()) + ".h")).string();
     MakeCppHeaderWriter()->Write(t, path, options);
     const HeaderValues h = ReadHeaderValues(path);
     EXPECT_TRUE(h.half);
@@ -244,7 +243,7 @@ TEST(CppHeaderWriter, HalfStorageRoundsOnceAndSaysBy) {
           const float fx = static_cast<float>((x + 0.5) / t.width());
           const float fy = static_cast<float>((y + 0.5) / t.height());
           const float expected = static_cast<float>(RoundToHalf(t.value(x, y, c)));
-          if (kind == TableKind::kDfg)
+          if (kind == &TableNamed("dfg"))
             std::snprintf(line, sizeof line,
                           "  fail += lutbake_luts::lookup_dfg(%.9gf, %.9gf)[%d] != %af;\n", fx, fy,
                           c, static_cast<double>(expected));
@@ -276,10 +275,10 @@ TEST(CppHeaderWriter, HalfStorageRoundsOnceAndSaysBy) {
 TEST(CppHeaderWriter, KullaContyHelpersMatchTheirFormulas) {
   const fs::path dir = TempDir("header_kc");
   BakeSettings s;
-  s.sizeE = s.sizeEavg = 12;
+  s.tableSizes = {{"E", 12}, {"Eavg", 12}};
   s.tolerance = 1e-7;
   s.commandLine = "lutbake bake --test";
-  const Table e = BakeTable(TableKind::kE, s), eavg = BakeTable(TableKind::kEavg, s);
+  const Table e = BakeTable(TableNamed("E"), s), eavg = BakeTable(TableNamed("Eavg"), s);
   const WriteOptions options;
   MakeCppHeaderWriter()->Write(e, (dir / "E.h").string(), options);
   MakeCppHeaderWriter()->Write(eavg, (dir / "Eavg.h").string(), options);

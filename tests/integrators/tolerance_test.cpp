@@ -29,7 +29,7 @@ Check CheckTable(const Table &t, double tolerance) {
           Ndf{NdfKind::kGgx, r * r}, SmithForm::kCorrelated, t.x.TexelCenter(x), 1e-13);
       bool over = false, overTolerance = false;
       for (int c = 0; c < t.channels; ++c) {
-        const double truth = t.kind == TableKind::kDfg ? (c ? ref.B : ref.A) : ref.E;
+        const double truth = t.definition == &TableNamed("dfg") ? (c ? ref.B : ref.A) : ref.E;
         const double error = std::abs(t.value(x, y, c) - truth);
         check.maxError = std::max(check.maxError, error);
         over = over || error > t.errors[t.index(x, y, c)];
@@ -43,7 +43,7 @@ Check CheckTable(const Table &t, double tolerance) {
 
 BakeSettings ToleranceSettings(int size, double tolerance) {
   BakeSettings s;
-  s.sizeE = s.sizeDfg = size;
+  s.tableSizes = {{"E", size}, {"dfg", size}};
   s.tolerance = tolerance;
   s.samples = kToleranceStartSamples;
   s.replicates = kToleranceReplicates;
@@ -53,15 +53,15 @@ BakeSettings ToleranceSettings(int size, double tolerance) {
 TEST(Tolerance, DefaultEstimatorReachesOneE6EverywhereWithinItsBound) {
   // 1e-6 is below what sampling can certify cheaply, so every texel goes to
   // the quadrature; its reported bound must hold and be at most EPS.
-  for (TableKind kind : {TableKind::kE, TableKind::kDfg}) {
+  for (const TableDefinition *kind : {&TableNamed("E"), &TableNamed("dfg")}) {
     BakeStats stats;
-    const Table t = BakeTable(kind, ToleranceSettings(12, 1e-6), {}, &stats);
+    const Table t = BakeTable(*kind, ToleranceSettings(12, 1e-6), {}, &stats);
     EXPECT_LE(t.MaxError(), 1e-6);
     EXPECT_EQ(stats.unconverged, 0u);
     const Check c = CheckTable(t, 1e-6);
-    EXPECT_EQ(c.overTolerance, 0) << TableName(kind) << " max error " << c.maxError;
+    EXPECT_EQ(c.overTolerance, 0) << kind->Name() << " max error " << c.maxError;
     // 144 texels: a 99% bound may fail on at most one.
-    EXPECT_LE(c.overBound, 1) << TableName(kind);
+    EXPECT_LE(c.overBound, 1) << kind->Name();
   }
 }
 
@@ -71,17 +71,17 @@ TEST(Tolerance, SamplingRoundsAloneReachALooseTolerance) {
   BakeSettings s = ToleranceSettings(8, 2e-3);
   s.estimator = Estimator::kVisibleNormal;
   s.allowQuadratureSwitch = false;
-  for (TableKind kind : {TableKind::kE, TableKind::kDfg}) {
+  for (const TableDefinition *kind : {&TableNamed("E"), &TableNamed("dfg")}) {
     BakeStats stats;
-    const Table t = BakeTable(kind, s, {}, &stats);
+    const Table t = BakeTable(*kind, s, {}, &stats);
     EXPECT_EQ(stats.quadratureTexels, 0u);
     EXPECT_EQ(stats.unconverged, 0u);
     EXPECT_LE(t.MaxError(), 2e-3);
     // At least 4.6 / EPS samples per texel: the unseen-event term alone.
     EXPECT_GE(static_cast<double>(stats.samples) / 64.0, kUnseenEventCount / 2e-3);
     const Check c = CheckTable(t, 2e-3);
-    EXPECT_EQ(c.overTolerance, 0) << TableName(kind) << " max error " << c.maxError;
-    EXPECT_EQ(c.overBound, 0) << TableName(kind);
+    EXPECT_EQ(c.overTolerance, 0) << kind->Name() << " max error " << c.maxError;
+    EXPECT_EQ(c.overBound, 0) << kind->Name();
   }
 }
 

@@ -56,7 +56,7 @@ TEST(Plan, FewExactRoughnessValuesGetListedRows) {
     const PlannedTable *t = Find(plan, name);
     ASSERT_NE(t, nullptr) << name;
     EXPECT_EQ(t->roughness.values, (std::vector<double>{0.25, 0.5})) << name;
-    const Axis &r = t->kind == TableKind::kEavg ? t->x : t->y;
+    const Axis &r = t->definition == &TableNamed("Eavg") ? t->x : t->y;
     EXPECT_TRUE(r.listed());
     EXPECT_EQ(r.TexelCenter(0), 0.25);
     EXPECT_EQ(r.TexelCenter(1), 0.5);
@@ -203,17 +203,16 @@ TEST(Plan, SeveralScenesAreTheirUnion) {
 TEST(PlanBake, NarrowedTableEqualsTheFullTableOnSharedTexels) {
   const BakePlan plan = PlanOf({kPlans + "textured.gltf"}, [] {
     PlanOptions o;
-    o.sizeDfg = 16;
+    o.tableSizes = {{"dfg", 16}};
     return o;
   }());
   BakeSettings s;
   s.samples = 1024;
-  s.sizeE = s.sizeEavg = 32;
-  s.sizeDfg = 16;
+  s.tableSizes = {{"E", 32}, {"Eavg", 32}, {"dfg", 16}};
   for (const PlannedTable &t : plan.tables) {
-    const Table narrow = BakeTableOn(t.kind, PlannedSettings(t, s), t.x, t.y);
-    const Table full = BakeTable(t.kind, s);
-    const bool average = t.kind == TableKind::kEavg;
+    const Table narrow = BakeTableOn(*t.definition, PlannedSettings(t, s), t.x, t.y);
+    const Table full = BakeTable(*t.definition, s);
+    const bool average = t.definition == &TableNamed("Eavg");
     const int rows = average ? narrow.width() : narrow.height();
     ASSERT_EQ(rows * 2, average ? full.width() : full.height()) << t.name;
     for (int r = 0; r < rows; ++r)
@@ -232,27 +231,26 @@ TEST(PlanBake, NarrowedTableEqualsTheFullTableOnSharedTexels) {
 TEST(PlanBake, ListedRowsMatchTheQuadratureWithinTheirBounds) {
   const BakePlan plan = PlanOf({kPlans + "listed.gltf"}, [] {
     PlanOptions o;
-    o.sizeDfg = 16;
-    o.sizeE = 16;
+    o.tableSizes = {{"dfg", 16}, {"E", 16}};
     return o;
   }());
   BakeSettings s;
   s.samples = 4096;
-  s.sizeDfg = s.sizeE = 16;
+  s.tableSizes = {{"dfg", 16}, {"E", 16}};
   BakeSettings reference = s;
   reference.estimator = Estimator::kQuadrature;
   for (const PlannedTable &t : plan.tables) {
-    const Table table = BakeTableOn(t.kind, PlannedSettings(t, s), t.x, t.y);
+    const Table table = BakeTableOn(*t.definition, PlannedSettings(t, s), t.x, t.y);
     double worst = 0.0;
     for (int y = 0; y < table.height(); ++y)
       for (int x = 0; x < table.width(); ++x) {
         PointValue truth;
-        if (t.kind == TableKind::kEavg) {
+        if (t.definition == &TableNamed("Eavg")) {
           const double r = table.x.TexelCenter(x);
           truth = EvaluateAlbedoAverage(reference, r * r, 0);
         } else {
           const double r = table.y.TexelCenter(y);
-          truth = EvaluateAlbedo(t.kind, reference, table.x.TexelCenter(x), r * r, 0);
+          truth = EvaluateAlbedo(*t.definition, reference, table.x.TexelCenter(x), r * r, 0);
         }
         for (int c = 0; c < table.channels; ++c) {
           const size_t i = table.index(x, y, c);

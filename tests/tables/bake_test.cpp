@@ -19,7 +19,7 @@ namespace {
 // A sampled bake (visible normals, the estimator --samples chooses).
 BakeSettings Small(int size, uint64_t samples) {
   BakeSettings s;
-  s.sizeE = s.sizeEavg = s.sizeFavg = s.sizeDfg = size;
+  s.size = size;
   s.samples = samples;
   s.estimator = Estimator::kVisibleNormal;
   return s;
@@ -29,21 +29,21 @@ TEST(Bake, DefaultSamplesMeetOneE4AgainstQuadrature) {
   // The default sample count on a 16 x 16 E and dfg (grazing column at
   // mu = 1/32, smoothest row at r = 1/32): every texel within 1e-4 of the
   // quadrature, the product's stated accuracy.
-  for (TableKind kind : {TableKind::kE, TableKind::kDfg}) {
-    const Table t = BakeTable(kind, Small(16, kDefaultSamples));
+  for (const TableDefinition *kind : {&TableNamed("E"), &TableNamed("dfg")}) {
+    const Table t = BakeTable(*kind, Small(16, kDefaultSamples));
     std::vector<double> worst(t.width() * t.height(), 0.0);
     tbb::parallel_for(size_t(0), worst.size(), [&](size_t i) {
       const int x = static_cast<int>(i % t.width()), y = static_cast<int>(i / t.width());
       const double r = t.y.TexelCenter(y);
       const ReferenceAlbedo ref = IntegrateReferenceAlbedo(
           Ndf{NdfKind::kGgx, r * r}, SmithForm::kCorrelated, t.x.TexelCenter(x));
-      if (kind == TableKind::kE)
+      if (kind == &TableNamed("E"))
         worst[i] = std::abs(t.value(x, y) - ref.E);
       else
         worst[i] = std::max(std::abs(t.value(x, y, 0) - ref.A), std::abs(t.value(x, y, 1) - ref.B));
     });
     for (size_t i = 0; i < worst.size(); ++i)
-      EXPECT_LE(worst[i], 1e-4) << TableName(kind) << " texel " << i % t.width() << ","
+      EXPECT_LE(worst[i], 1e-4) << kind->Name() << " texel " << i % t.width() << ","
                                 << i / t.width();
   }
 }
@@ -52,7 +52,7 @@ TEST(Bake, ErrorBoundsHoldForNinetyNinePercentOfInteriorTexels) {
   // The bound is a 99% Student-t interval; away from the smoothest rows
   // (where the GGX tail makes misses a rare event, see README) at most a few
   // percent of texels may exceed it. 64 texels: allow 4.
-  const Table t = BakeTable(TableKind::kE, Small(8, 4096));
+  const Table t = BakeTable(TableNamed("E"), Small(8, 4096));
   int exceed = 0;
   for (int y = 1; y < t.height(); ++y)
     for (int x = 0; x < t.width(); ++x) {
@@ -92,7 +92,7 @@ TEST(Bake, SmoothLimitEIsOneAndBIsSchlickWeight) {
                 StudentT99(kDefaultReplicates - 1) * sampled.standardError[1] + 1e-6)
         << mu;
   }
-  const Table e = BakeTable(TableKind::kE, Small(4, 4096));
+  const Table e = BakeTable(TableNamed("E"), Small(4, 4096));
   // On the default axes, E decreases along each column as roughness grows.
   for (int x = 0; x < e.width(); ++x)
     for (int y = 1; y < e.height(); ++y)
@@ -114,8 +114,8 @@ TEST(Bake, SplitSumAddsUpToAlbedo) {
   // A + B = E: dfg and E are baked with independent point sets, so the
   // difference is bounded by the sum of their error bounds.
   const BakeSettings s = Small(12, 8192);
-  const Table e = BakeTable(TableKind::kE, s);
-  const Table dfg = BakeTable(TableKind::kDfg, s);
+  const Table e = BakeTable(TableNamed("E"), s);
+  const Table dfg = BakeTable(TableNamed("dfg"), s);
   for (int y = 0; y < e.height(); ++y)
     for (int x = 0; x < e.width(); ++x) {
       const double bound = e.errors[e.index(x, y, 0)] + dfg.errors[dfg.index(x, y, 0)] +
@@ -125,7 +125,7 @@ TEST(Bake, SplitSumAddsUpToAlbedo) {
 }
 
 TEST(Bake, SchlickFavgIsTheClosedForm) {
-  const Table t = BakeTable(TableKind::kFavg, Small(32, 2));
+  const Table t = BakeTable(TableNamed("Favg"), Small(32, 2));
   for (int x = 0; x < t.width(); ++x) {
     const double f0 = (x + 0.5) / 32.0;
     EXPECT_NEAR(t.value(x, 0), 20.0 / 21.0 * f0 + 1.0 / 21.0, 1e-15);
@@ -135,7 +135,7 @@ TEST(Bake, SchlickFavgIsTheClosedForm) {
 TEST(Bake, ConductorFavgIsTwoDimensionalAndBounded) {
   BakeSettings s = Small(8, 2);
   s.fresnel = FresnelModel::kConductor;
-  const Table t = BakeTable(TableKind::kFavg, s);
+  const Table t = BakeTable(TableNamed("Favg"), s);
   EXPECT_TRUE(t.is2D());
   EXPECT_EQ(t.y.name, "k");
   for (double v : t.values) EXPECT_TRUE(v >= 0.0 && v <= 1.0);
@@ -144,7 +144,7 @@ TEST(Bake, ConductorFavgIsTwoDimensionalAndBounded) {
 TEST(Bake, EavgAgreesWithTheIntegralOfE) {
   // E_avg from its own 3D estimator against the quadrature of 2 int E mu dmu,
   // within the estimator's bound.
-  const Table t = BakeTable(TableKind::kEavg, Small(4, 4096));
+  const Table t = BakeTable(TableNamed("Eavg"), Small(4, 4096));
   for (int x = 0; x < t.width(); ++x) {
     const double r = t.x.TexelCenter(x);
     const ReferenceAverage ref =
@@ -155,30 +155,30 @@ TEST(Bake, EavgAgreesWithTheIntegralOfE) {
 
 TEST(Bake, BitIdenticalForOneAndTwoThreads) {
   const BakeSettings s = Small(16, 256);
-  for (TableKind kind : kAllTables) {
+  for (const TableDefinition *kind : AllTables()) {
     Table one, two;
     {
       tbb::global_control c(tbb::global_control::max_allowed_parallelism, 1);
-      one = BakeTable(kind, s);
+      one = BakeTable(*kind, s);
     }
     {
       tbb::global_control c(tbb::global_control::max_allowed_parallelism, 2);
-      two = BakeTable(kind, s);
+      two = BakeTable(*kind, s);
     }
     ASSERT_EQ(one.values.size(), two.values.size());
     EXPECT_EQ(0,
               std::memcmp(one.values.data(), two.values.data(), one.values.size() * sizeof(double)))
-        << TableName(kind);
+        << kind->Name();
     EXPECT_EQ(0,
               std::memcmp(one.errors.data(), two.errors.data(), one.errors.size() * sizeof(double)))
-        << TableName(kind);
+        << kind->Name();
   }
 }
 
 TEST(Bake, SeedChangesTheEstimateWithinItsError) {
   BakeSettings a = Small(8, 1024), b = a;
   b.seed = 12345;
-  const Table ta = BakeTable(TableKind::kE, a), tb = BakeTable(TableKind::kE, b);
+  const Table ta = BakeTable(TableNamed("E"), a), tb = BakeTable(TableNamed("E"), b);
   bool anyDifferent = false;
   for (size_t i = 0; i < ta.values.size(); ++i) {
     anyDifferent = anyDifferent || ta.values[i] != tb.values[i];
@@ -195,8 +195,9 @@ TEST(Bake, NoNanOrOutOfRangeForEveryModel) {
         s.ndf = ndf;
         s.smith = smith;
         s.estimator = est;
-        for (TableKind kind : {TableKind::kE, TableKind::kDfg, TableKind::kEavg}) {
-          const Table t = BakeTable(kind, s);
+        for (const TableDefinition *kind :
+             {&TableNamed("E"), &TableNamed("dfg"), &TableNamed("Eavg")}) {
+          const Table t = BakeTable(*kind, s);
           for (double v : t.values) {
             ASSERT_TRUE(std::isfinite(v));
             // NDF sampling has unbounded weights, so its estimate may exceed 1
@@ -214,7 +215,7 @@ TEST(Bake, NoNanOrOutOfRangeForEveryModel) {
 TEST(Bake, BeckmannMatchesQuadrature) {
   BakeSettings s = Small(6, 16384);
   s.ndf = NdfKind::kBeckmann;
-  const Table t = BakeTable(TableKind::kE, s);
+  const Table t = BakeTable(TableNamed("E"), s);
   for (int y = 0; y < t.height(); ++y)
     for (int x = 0; x < t.width(); ++x) {
       const double r = t.y.TexelCenter(y);

@@ -34,7 +34,7 @@ Compared Reference(const Table &t, const std::vector<size_t> &texels) {
   tbb::parallel_for(size_t(0), texels.size(), [&](size_t k) {
     const int x = static_cast<int>(texels[k] % t.width()),
               y = static_cast<int>(texels[k] / t.width());
-    if (t.kind == TableKind::kEavg) {
+    if (t.definition == &TableNamed("Eavg")) {
       const double r = t.x.TexelCenter(x);
       const ReferenceAverage a =
           IntegrateReferenceAlbedoAverage(Ndf{NdfKind::kGgx, r * r}, SmithForm::kCorrelated, 1e-11);
@@ -45,7 +45,7 @@ Compared Reference(const Table &t, const std::vector<size_t> &texels) {
     const double mu = t.x.TexelCenter(x), r = t.y.TexelCenter(y);
     const ReferenceAlbedo a =
         IntegrateReferenceAlbedo(Ndf{NdfKind::kGgx, r * r}, SmithForm::kCorrelated, mu, 1e-12);
-    if (t.kind == TableKind::kE) {
+    if (t.definition == &TableNamed("E")) {
       c.truth[k] = a.E;
     } else {
       c.truth[2 * k] = a.A;
@@ -88,10 +88,10 @@ std::vector<size_t> AllTexels(const Table &t) {
 
 TEST(DefaultBake, SmallTablesAreFloat32Exact) {
   BakeSettings s;  // the default: panel quadrature, bound 1e-8
-  s.sizeE = s.sizeEavg = s.sizeDfg = 16;
-  for (TableKind kind : {TableKind::kE, TableKind::kEavg, TableKind::kDfg}) {
-    const Table t = BakeTable(kind, s);
-    ExpectFloat32Exact(t, Reference(t, AllTexels(t)), TableName(kind));
+  s.tableSizes = {{"E", 16}, {"Eavg", 16}, {"dfg", 16}};
+  for (const TableDefinition *kind : {&TableNamed("E"), &TableNamed("Eavg"), &TableNamed("dfg")}) {
+    const Table t = BakeTable(*kind, s);
+    ExpectFloat32Exact(t, Reference(t, AllTexels(t)), kind->Name());
   }
 }
 
@@ -99,16 +99,16 @@ TEST(DefaultBake, SmallTablesAreFloat32Exact) {
 // (r <= 1/32) and the grazing columns (mu <= 1/64) of E 32 x 32 and
 // dfg 128 x 128, every texel there.
 TEST(DefaultBake, StiffRowsAndColumnsAreFloat32Exact) {
-  for (TableKind kind : {TableKind::kE, TableKind::kDfg}) {
-    const Table t = BakeTable(kind, BakeSettings{});
+  for (const TableDefinition *kind : {&TableNamed("E"), &TableNamed("dfg")}) {
+    const Table t = BakeTable(*kind, BakeSettings{});
     std::vector<size_t> stiff;
     for (int y = 0; y < t.height(); ++y)
       for (int x = 0; x < t.width(); ++x)
         if (t.y.TexelCenter(y) <= 1.0 / 32 || t.x.TexelCenter(x) <= 1.0 / 64)
           stiff.push_back(static_cast<size_t>(y) * t.width() + x);
     // E: row 0 and column 0 (63 texels); dfg: rows 0-3 and columns 0-1 (760).
-    ASSERT_EQ(stiff.size(), kind == TableKind::kE ? 63u : 760u);
-    ExpectFloat32Exact(t, Reference(t, stiff), std::string(TableName(kind)) + " stiff");
+    ASSERT_EQ(stiff.size(), kind == &TableNamed("E") ? 63u : 760u);
+    ExpectFloat32Exact(t, Reference(t, stiff), std::string(kind->Name()) + " stiff");
   }
 }
 
@@ -118,10 +118,11 @@ TEST(DefaultBake, ToleranceBakeErrorMapHoldsAtEveryTexel) {
   for (double tolerance : {1e-3, 1e-5}) {
     BakeSettings s;
     s.tolerance = tolerance;
-    s.sizeE = s.sizeEavg = s.sizeDfg = 12;
-    for (TableKind kind : {TableKind::kE, TableKind::kEavg, TableKind::kDfg}) {
+    s.tableSizes = {{"E", 12}, {"Eavg", 12}, {"dfg", 12}};
+    for (const TableDefinition *kind :
+         {&TableNamed("E"), &TableNamed("Eavg"), &TableNamed("dfg")}) {
       BakeStats stats;
-      const Table t = BakeTable(kind, s, {}, &stats);
+      const Table t = BakeTable(*kind, s, {}, &stats);
       EXPECT_EQ(stats.unconverged, 0u);
       EXPECT_LE(t.MaxError(), tolerance);
       const Table map = ErrorMapOf(t);
@@ -131,7 +132,7 @@ TEST(DefaultBake, ToleranceBakeErrorMapHoldsAtEveryTexel) {
           const size_t i = k * t.channels + ch;
           EXPECT_LE(std::abs(StoredValue(t.values[i], ValueType::kFloat32) - c.truth[i]),
                     map.values[i] + c.truthError[i])
-              << TableName(kind) << " tolerance " << tolerance << " texel " << k;
+              << kind->Name() << " tolerance " << tolerance << " texel " << k;
           EXPECT_EQ(map.values[i], static_cast<double>(static_cast<float>(map.values[i])));
         }
     }
@@ -142,24 +143,24 @@ TEST(DefaultBake, ToleranceBakeErrorMapHoldsAtEveryTexel) {
 // coordinates only.
 TEST(DefaultBake, BitIdenticalForOneTwoAndSixteenThreads) {
   BakeSettings s;
-  s.sizeE = s.sizeEavg = s.sizeFavg = 16;
-  s.sizeDfg = 32;
-  for (TableKind kind : kAllTables) {
+  s.size = 16;
+  s.tableSizes = {{"dfg", 32}};
+  for (const TableDefinition *kind : AllTables()) {
     std::vector<Table> tables;
     for (int threads : {1, 2, 16}) {
       // Exactly that many threads, even on fewer cores (as --threads N does).
       tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
       tbb::task_arena arena(threads);
-      arena.execute([&] { tables.push_back(BakeTable(kind, s)); });
+      arena.execute([&] { tables.push_back(BakeTable(*kind, s)); });
     }
     for (size_t k = 1; k < tables.size(); ++k) {
       ASSERT_EQ(tables[k].values.size(), tables[0].values.size());
       EXPECT_EQ(0, std::memcmp(tables[k].values.data(), tables[0].values.data(),
                                tables[0].values.size() * sizeof(double)))
-          << TableName(kind);
+          << kind->Name();
       EXPECT_EQ(0, std::memcmp(tables[k].errors.data(), tables[0].errors.data(),
                                tables[0].errors.size() * sizeof(double)))
-          << TableName(kind);
+          << kind->Name();
     }
   }
 }

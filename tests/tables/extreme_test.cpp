@@ -138,8 +138,8 @@ TEST(ExtremeGrid, SampledEstimateIsWithinItsBoundAndOneE4) {
     s.smith = grid[i].smith;
     s.estimator = Estimator::kVisibleNormal;
     const double alpha = grid[i].r * grid[i].r;
-    sampled[i] = EvaluateAlbedo(TableKind::kDfg, s, grid[i].mu, alpha,
-                                PointSeed(TableKind::kDfg, grid[i].mu, alpha, 0));
+    sampled[i] = EvaluateAlbedo(TableNamed("dfg"), s, grid[i].mu, alpha,
+                                PointSeed(TableNamed("dfg").SeedId(), grid[i].mu, alpha, 0));
     truth[i] = IntegrateReferenceAlbedo(Ndf{grid[i].ndf, alpha}, grid[i].smith, grid[i].mu);
   });
   for (size_t i = 0; i < grid.size(); ++i) {
@@ -177,9 +177,9 @@ TEST(ExtremeGrid, CornerErrorStaysWithinTwiceTheInterior) {
         s.samples = 1024;
         double sum = 0.0;
         for (int seed = 0; seed < kSeeds; ++seed) {
-          const PointValue v = EvaluateAlbedo(
-              TableKind::kDfg, s, points[i].mu, alpha,
-              PointSeed(TableKind::kDfg, points[i].mu, alpha, static_cast<uint64_t>(seed)));
+          const PointValue v = EvaluateAlbedo(TableNamed("dfg"), s, points[i].mu, alpha,
+                                              PointSeed(TableNamed("dfg").SeedId(), points[i].mu,
+                                                        alpha, static_cast<uint64_t>(seed)));
           sum += Sqr(v.value[0] - truth.A) + Sqr(v.value[1] - truth.B);
         }
         rms[i] = std::sqrt(sum / kSeeds);
@@ -220,19 +220,19 @@ TEST(ExtremeGrid, BeckmannAtTinyAlphaNeitherUnderflowsNorOverflows) {
   // And the albedo there is the mirror's, to the limits.csv accuracy.
   BakeSettings s;
   s.ndf = NdfKind::kBeckmann;
-  const PointValue sampled = EvaluateAlbedo(TableKind::kE, s, 0.5, alpha, 1);
+  const PointValue sampled = EvaluateAlbedo(TableNamed("E"), s, 0.5, alpha, 1);
   EXPECT_NEAR(sampled.value[0], 1.0, sampled.error[0]);
   EXPECT_NEAR(IntegrateReferenceAlbedo(ndf, SmithForm::kCorrelated, 0.5).E, 1.0, 1e-12);
 }
 
 TEST(ExtremeGrid, PointEvaluationRefusesWhatItCannotEvaluate) {
   BakeSettings s;
-  EXPECT_THROW(EvaluateAlbedo(TableKind::kE, s, 0.5, 1e-30, 0), std::domain_error);
-  EXPECT_THROW(EvaluateAlbedo(TableKind::kE, s, 0.5, 1.5, 0), std::domain_error);
-  EXPECT_THROW(EvaluateAlbedo(TableKind::kE, s, -0.1, 0.5, 0), std::domain_error);
-  EXPECT_THROW(EvaluateAlbedo(TableKind::kE, s, std::nan(""), 0.5, 0), std::domain_error);
+  EXPECT_THROW(EvaluateAlbedo(TableNamed("E"), s, 0.5, 1e-30, 0), std::domain_error);
+  EXPECT_THROW(EvaluateAlbedo(TableNamed("E"), s, 0.5, 1.5, 0), std::domain_error);
+  EXPECT_THROW(EvaluateAlbedo(TableNamed("E"), s, -0.1, 0.5, 0), std::domain_error);
+  EXPECT_THROW(EvaluateAlbedo(TableNamed("E"), s, std::nan(""), 0.5, 0), std::domain_error);
   EXPECT_THROW(EvaluateAlbedoAverage(s, std::nan(""), 0), std::domain_error);
-  EXPECT_NO_THROW(EvaluateAlbedo(TableKind::kE, s, 0.5, kMinimumAlpha, 0));
+  EXPECT_NO_THROW(EvaluateAlbedo(TableNamed("E"), s, 0.5, kMinimumAlpha, 0));
 }
 
 TEST(ExtremeGrid, FresnelAveragesAtTheExtremes) {

@@ -277,7 +277,7 @@ TEST(Lookup, TexelCentresClampingAndTheMuIntegral) {
 TEST(TableReader, ExrAndHeaderReadBackWhatWasWritten) {
   const Table exr = ReadExrTable((GoodBake() / "dfg.exr").string());
   const Table bin = ReadBinaryTable((GoodBake() / "dfg.bin").string());
-  EXPECT_EQ(exr.kind, TableKind::kDfg);
+  EXPECT_EQ(exr.definition, &TableNamed("dfg"));
   EXPECT_EQ(DescribeAxis(exr.x), DescribeAxis(bin.x));
   EXPECT_EQ(DescribeAxis(exr.y), DescribeAxis(bin.y));
   EXPECT_EQ(exr.values, bin.values);

@@ -13,7 +13,7 @@ namespace {
 
 TEST(Report, VisibleNormalErrorsFallAndQuadratureIsAccurate) {
   ReportSettings s;
-  s.tables = {TableKind::kE};
+  s.tables = {&TableNamed("E")};
   s.estimators = {Estimator::kVisibleNormal, Estimator::kVisibleNormalRandom,
                   Estimator::kQuadrature};
   s.size = 8;

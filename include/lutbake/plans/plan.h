@@ -19,6 +19,9 @@
 //     over [min, max] of all uses, with as many rows as the full [0, 1] axis
 //     would spend on that interval (at least 2), so the texel spacing does not
 //     grow.
+//   - Which tables serve which purpose is each table's PlanRole
+//     (table_definition.h): a new table with an existing role is planned
+//     with no change here.
 //   - Tables are named E, Eavg, dfg, Favg; when a plan needs two variants of
 //     one (GGX and Beckmann materials, say), the ones that are not GGX with
 //     the height-correlated Smith term get a suffix: E_beckmann,
@@ -29,6 +32,7 @@
 //     other lobes.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,8 +52,10 @@ struct PlanOptions {
   std::optional<bool> defaultIbl;
   std::optional<bool> defaultCompensation;
   int maxListedRoughness = kMaxListedRoughness;
-  // Texels per axis of the full tables (the bake's --size, or 32 / 128).
-  int sizeE = 32, sizeEavg = 32, sizeFavg = 32, sizeDfg = 128;
+  // Texels per axis of the full tables: tableSizes[name], else size, else
+  // (0) the table's default (the bake's --size, or 32 / 128).
+  int size = 0;
+  std::map<std::string, int> tableSizes;
 };
 
 // The values of one parameter that a table must cover.
@@ -60,7 +66,7 @@ struct CoveredRange {
 
 struct PlannedTable {
   std::string name;  // file stem and header identifier
-  TableKind kind = TableKind::kE;
+  const TableDefinition *definition = nullptr;
   NdfKind ndf = NdfKind::kGgx;                    // E, Eavg, dfg
   SmithForm smith = SmithForm::kCorrelated;       // E, Eavg, dfg
   FresnelModel fresnel = FresnelModel::kSchlick;  // Favg

@@ -14,13 +14,7 @@
 
 namespace lutbake {
 
-enum class TableKind { kE, kEavg, kFavg, kDfg };
-
-inline constexpr TableKind kAllTables[] = {TableKind::kE, TableKind::kEavg, TableKind::kFavg,
-                                           TableKind::kDfg};
-
-// "E", "Eavg", "Favg", "dfg": the names used on the command line and in file names.
-const char *TableName(TableKind kind);
+class TableDefinition;  // table_definition.h
 
 struct Axis {
   std::string name;  // the physical quantity: "mu", "perceptualRoughness", "F0", "eta", "k"
@@ -56,10 +50,12 @@ inline Axis LinearAxis(std::string name, double min, double max, int count) {
 Axis ListedAxis(std::string name, std::vector<double> nodes);
 
 struct Table {
-  TableKind kind = TableKind::kE;
-  // The file stem and header identifier when it is not the kind's name: a
-  // bake plan that needs two variants of a table names them "E_beckmann",
-  // "Favg_conductor", ...
+  // What the table is (table_definition.h); the readers set it from the
+  // metadata key 'table'.
+  const TableDefinition *definition = nullptr;
+  // The file stem and header identifier when it is not the definition's
+  // name: a bake plan that needs two variants of a table names them
+  // "E_beckmann", "Favg_conductor", ...
   std::string name;
   Axis x;  // width: the first axis (mu, or the Fresnel parameter)
   Axis y;  // height: perceptual roughness, or the second Fresnel axis;
@@ -71,7 +67,10 @@ struct Table {
   // Ordered (key, value) pairs: table, ndf, smith, fresnel, estimator, ...
   std::vector<std::pair<std::string, std::string>> metadata;
 
-  std::string Name() const { return name.empty() ? TableName(kind) : name; }
+  // name, or the definition's name ("" without either).
+  std::string Name() const;
+  // The definition's name ("E" for a table named "E_beckmann").
+  std::string DefinitionName() const;
   int width() const { return x.count; }
   int height() const { return y.count; }
   bool is2D() const { return !y.name.empty(); }

@@ -17,7 +17,7 @@
 namespace lutbake {
 
 struct ReportSettings {
-  std::vector<TableKind> tables{TableKind::kE, TableKind::kDfg};
+  std::vector<const TableDefinition *> tables{&TableNamed("E"), &TableNamed("dfg")};
   std::vector<Estimator> estimators{std::begin(kAllEstimators), std::end(kAllEstimators)};
   NdfKind ndf = NdfKind::kGgx;
   SmithForm smith = SmithForm::kCorrelated;
@@ -27,7 +27,7 @@ struct ReportSettings {
 };
 
 struct ReportRow {
-  TableKind table = TableKind::kE;
+  const TableDefinition *table = nullptr;
   Estimator estimator = Estimator::kVisibleNormal;
   double samplesPerTexel = 0;  // sampled: samples; quadrature: evaluations (mean)
   double tolerance = 0;        // quadrature rows: the tolerance asked

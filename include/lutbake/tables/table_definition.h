@@ -1,0 +1,224 @@
+// What a table is, in one place. Every table lutbake bakes is one
+// TableDefinition (src/tables/<name>.cpp), listed once in the registry
+// (src/tables/registry.cpp). The baker, the readers and writers, `eval`,
+// `check`, `report`, `plan` and the command line ask the definitions; none
+// of them knows a table by name.
+//
+// A definition states:
+//   identity     its name (command line, file stems, metadata 'table') and a
+//                seed number that no other table uses;
+//   what it is   the integral (Formula), its channels and what each holds;
+//   axes         the default axes, the point coordinates `eval` takes for
+//                them, and the accepted range of each;
+//   model        the options that choose its model, the metadata that
+//                records it, and how to read that back from a file;
+//   integration  Evaluate(settings, x, y): the value and its bound at any
+//                point of its axes, with the settings' estimator;
+//   claims       what `check` asserts: the value range, monotonicity, a
+//                closed form, and relations to other tables (channels that
+//                sum to another table, an average over another's rows, a
+//                furnace);
+//   uses         the role a bake plan needs it for, and the header's notes
+//                and helper functions.
+// To add a table: write its definition (one .cpp under src/tables/, using
+// the integrators below), add it to the registry, and test it.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "lutbake/tables/settings.h"
+#include "lutbake/tables/table.h"
+
+namespace lutbake {
+
+using Metadata = std::vector<std::pair<std::string, std::string>>;
+
+// One coordinate of a point of a table: the `lutbake eval` option that
+// gives it (without the dashes; also its JSON key and its label in eval's
+// text output) and the values it accepts.
+struct PointCoordinate {
+  std::string option;  // "mu", "roughness", "f0", "eta", "k"
+  double min = 0.0, max = 1.0;
+  bool zeroAllowed = false;  // 0 accepted besides [min, max]
+  std::string accepted;      // the accepted values in words, for messages
+  bool required = true;      // false: 0 when not given (a conductor's k)
+  bool Accepts(double v) const { return (v >= min && v <= max) || (zeroAllowed && v == 0.0); }
+};
+
+// What `lutbake check` asserts of every value of a table.
+struct ValueClaim {
+  double lower = 0.0;
+  double upper = 1.0;         // HUGE_VAL: no upper limit
+  bool sumAtMostOne = false;  // the channels add up to at most 1
+  std::string text;           // the claim in words: "in [0, 1]"
+};
+
+// A monotonicity `check` asserts along the x axis (every row), from x = from
+// on: direction +1 non-decreasing, -1 non-increasing; 0 claims nothing and
+// says why in `skipped`.
+struct MonotonicClaim {
+  int direction = 0;
+  double from = -1e300;
+  std::string claim;    // "E_avg non-increasing in roughness"
+  std::string skipped;  // direction 0: why nothing is claimed
+};
+
+// A closed form every texel must equal to float rounding.
+struct ClosedForm {
+  std::string subject;  // "Schlick F_avg"
+  std::string formula;  // "20/21 F0 + 1/21"
+  std::function<double(double x, double y)> value;
+};
+
+// Relations to other tables (by name) that `check` verifies when both are in
+// a baked set, and that decide which helper headers a bake writes.
+struct TableRelations {
+  // The channels of this table add up to that table at the same point
+  // (dfg: A + B = E).
+  std::string channelsSumTo;
+  // This table is 2 integral_0^1 T(mu) mu dmu over the rows of table T
+  // (Eavg of E): its x axis is T's y axis.
+  std::string averageOf;
+  // With averageOf: the Kulla-Conty furnace of T and this table, and the
+  // kulla_conty.h helpers of a header bake.
+  bool kullaConty = false;
+  // The albedo-scaling furnace of a layer over a white base (sheen):
+  // layer + (1 - E(mu_o)) base reflects 1 + E - E_lookup.
+  bool albedoScaling = false;
+};
+
+// Why a bake plan (plans/plan.h) needs a table.
+enum class PlanRole {
+  kNone,                // never planned
+  kImageBasedLighting,  // split-sum IBL of the specular lobe (dfg)
+  kEnergyCompensation,  // Kulla-Conty multiple scattering (E, Eavg)
+  kFresnelAverage,      // F_avg of compensated non-Schlick Fresnel (Favg)
+  kSheenAlbedoScaling,  // KHR_materials_sheen's albedo scaling (sheen_E)
+};
+
+// What a generated C++ header says about the table besides its axes.
+struct HeaderText {
+  std::vector<std::string> notes;      // comment lines (without "// ")
+  std::vector<std::string> constants;  // declarations, one per line
+  // What follows "// Layout: kValues[(y * kWidth + x) * kChannels + c]",
+  // line ends included.
+  std::string layout = "; one channel.\n";
+  std::string lookupComment;  // the line above lookup_<name>, without "// "
+  // Inline functions after lookup_<name>; `lookup` is that function's name.
+  std::function<std::string(const std::string &lookup)> helpers;
+};
+
+class TableDefinition {
+ public:
+  virtual ~TableDefinition() = default;
+
+  // ---- identity -------------------------------------------------------
+  // "E", "dfg", "sheen_E": the command line's name, the file stem and the
+  // metadata key 'table'.
+  virtual const char *Name() const = 0;
+  // Hashed into the seeds of its sampled points (PointSeed): unique, and
+  // never changed, so that a table's samples stay the same.
+  virtual uint64_t SeedId() const = 0;
+  // One line: what the table holds, for --help and `lutbake tables`.
+  virtual std::string Summary() const = 0;
+
+  // ---- channels -------------------------------------------------------
+  // EXR channel names ({"Y"}, {"R", "G"}) and what each holds ({"E"},
+  // {"A", "B"}: the names eval and the headers use).
+  virtual std::vector<std::string> ChannelNames() const { return {"Y"}; }
+  virtual std::vector<std::string> ChannelMeanings() const { return {Name()}; }
+  // The metadata key channelLayout: "Y = E".
+  virtual std::string ChannelLayout() const { return "Y = " + std::string(Name()); }
+  int Channels() const { return static_cast<int>(ChannelNames().size()); }
+
+  // ---- axes -----------------------------------------------------------
+  virtual int DefaultSize() const { return 32; }
+  // The default axes with `size` texels on each (a 1D table: y.count = 1,
+  // y.name empty).
+  virtual void Axes(const BakeSettings &settings, int size, Axis *x, Axis *y) const = 0;
+  // The point coordinates: x, then y for a 2D table, as eval takes them.
+  virtual std::vector<PointCoordinate> Coordinates(const BakeSettings &settings) const = 0;
+  // Every eval option any variant of the table takes (Favg: f0, eta, k).
+  virtual std::vector<std::string> CoordinateOptions() const;
+  // The axis (0 = x, 1 = y) a bake plan narrows to the roughness its
+  // materials use, or -1 (plans/plan.h).
+  virtual int PlannedRoughnessAxis() const { return -1; }
+
+  // ---- model ----------------------------------------------------------
+  // The command-line options that choose its model: "ndf", "smith", ...
+  virtual std::vector<std::string> ModelOptions() const = 0;
+  // The metadata that records the model, before the axes (ndf, smith,
+  // fresnel, ...), and the key 'alpha' after them.
+  virtual Metadata ModelMetadata(const BakeSettings &settings) const = 0;
+  virtual std::string AlphaMetadata(const BakeSettings &settings) const = 0;
+  // The model in words ("ggx correlated", "fresnel schlick").
+  virtual std::string DescribeModel(const BakeSettings &settings) const = 0;
+  // Labels of a point besides its coordinates (eval's text and JSON):
+  // Favg's {"fresnel", "schlick"}.
+  virtual Metadata PointLabels(const BakeSettings &) const { return {}; }
+  // Reads the model from a file's metadata and axes (lutbake check) into
+  // `settings`; returns false, with the reasons, when the file does not
+  // describe a table lutbake writes.
+  virtual bool ReadModel(const Table &table, BakeSettings *settings,
+                         std::vector<std::string> *problems) const = 0;
+  // Do two settings give this table the same model?
+  virtual bool SameModel(const BakeSettings &a, const BakeSettings &b) const = 0;
+
+  // ---- integration ----------------------------------------------------
+  // Does it take the sampled estimators and --tolerance? (F_avg is always
+  // integrated by its deterministic rule.)
+  virtual bool Sampled() const { return true; }
+  // Its value (up to two channels) and error bound at axis values (x, y),
+  // with the settings' estimator. Throws std::domain_error outside the
+  // accepted coordinates.
+  virtual PointValue Evaluate(const BakeSettings &settings, double x, double y) const = 0;
+  // Samples per texel of a fixed-sample bake (0: deterministic).
+  virtual uint64_t SamplesPerTexel(const BakeSettings &settings) const;
+  // The metadata words for the deterministic integrators: the estimator
+  // key, and the errorBound key of quadrature texels.
+  virtual std::string QuadratureDescription(const BakeSettings &settings) const;
+  virtual std::string QuadratureBound(const BakeSettings &settings) const;
+  // Relative cost of one reference value, for scheduling (E_avg
+  // integrates a whole row: high).
+  virtual double ReferenceCost() const { return 1.0; }
+
+  // ---- claims ---------------------------------------------------------
+  virtual ValueClaim Range(const BakeSettings &) const { return {0.0, 1.0, false, "in [0, 1]"}; }
+  virtual std::optional<MonotonicClaim> Monotonic(const BakeSettings &) const { return {}; }
+  virtual std::optional<ClosedForm> Closed(const BakeSettings &) const { return {}; }
+  virtual TableRelations Relations() const { return {}; }
+
+  // ---- uses -----------------------------------------------------------
+  virtual PlanRole Role() const { return PlanRole::kNone; }
+  virtual HeaderText Header(const Table &table) const = 0;
+};
+
+// Every table, in the order the command line lists them.
+const std::vector<const TableDefinition *> &AllTables();
+// The table called `name`, or nullptr.
+const TableDefinition *FindTable(std::string_view name);
+// The table called `name`; throws std::invalid_argument for an unknown name.
+const TableDefinition &TableNamed(std::string_view name);
+// "E, Eavg, Favg, dfg, ...": every name, for messages.
+std::string TableNameList();
+
+// The value of a metadata key; a missing key adds "key 'K' missing" to
+// `problems` and gives "" (for ReadModel).
+std::string RequiredMetadata(const Table &table, const std::string &key,
+                             std::vector<std::string> *problems);
+
+// The seed of a sampled point's independent random points (vndf-random,
+// cosine, uniform): a hash of the table's seed number, the point's
+// coordinates (their bit patterns) and the user's seed. A bake seeds each
+// texel with the seed of its centre; scrambled Sobol points are shared by a
+// whole table instead (point_blocks.h). Either way `lutbake eval` at a texel
+// centre with the bake's settings reproduces that texel bit for bit.
+uint64_t PointSeed(uint64_t tableSeedId, double x, double y, uint64_t seed);
+
+}  // namespace lutbake

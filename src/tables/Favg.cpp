@@ -1,0 +1,156 @@
+// Table Favg: the cosine-weighted average of a Fresnel reflectance,
+//   F_avg = 2 integral_0^1 F(mu) mu dmu,
+// the colour of Kulla and Conty's multiple-scattering lobe (F_ms =
+// F_avg^2 E_avg / (1 - F_avg (1 - E_avg))). One table per Fresnel model:
+//   schlick     x = F0 in [0, 1]; exactly 20/21 F0 + 1/21 (check asserts it)
+//   dielectric  x = eta in [1, 3]
+//   conductor   x = eta in [0, 4], y = k in [0, 10]
+// 32 texels per axis by default. Integrated by adaptive Gauss-Kronrod over
+// mu (integrators/fresnel_average.h), never sampled.
+#include <cmath>
+
+#include "lutbake/integrators/fresnel_average.h"
+#include "lutbake/tables/bake.h"
+#include "microfacet_table.h"
+
+namespace lutbake {
+
+PointValue EvaluateFresnelAverage(FresnelModel model, double x, double y) {
+  FresnelAverageResult r;
+  switch (model) {
+    case FresnelModel::kSchlick: r = SchlickFresnelAverage(x); break;
+    case FresnelModel::kDielectric: r = ExactFresnelAverage(x, 0.0); break;
+    case FresnelModel::kConductor: r = ExactFresnelAverage(x, y); break;
+  }
+  PointValue out;
+  out.value[0] = r.value;
+  out.error[0] = r.error;
+  out.quadrature = true;
+  return out;
+}
+
+namespace {
+
+PointCoordinate Coordinate(const char *option, double min, double max, const char *accepted) {
+  PointCoordinate c;
+  c.option = option;
+  c.min = min;
+  c.max = max;
+  c.accepted = accepted;
+  return c;
+}
+
+class FresnelAverage final : public TableDefinition {
+ public:
+  const char *Name() const override { return "Favg"; }
+  uint64_t SeedId() const override { return 2; }
+  std::string Summary() const override {
+    return "average Fresnel F_avg = 2 integral F(mu) mu dmu of a Fresnel model (--fresnel)";
+  }
+  void Axes(const BakeSettings &s, int size, Axis *x, Axis *y) const override {
+    FresnelAxes(s.fresnel, size, x, y);
+  }
+  std::vector<PointCoordinate> Coordinates(const BakeSettings &s) const override {
+    const PointCoordinate eta =
+        Coordinate("eta", 1e-3, 1e3, "comma-separated numbers from 1e-3 to 1000");
+    switch (s.fresnel) {
+      case FresnelModel::kSchlick:
+        return {Coordinate("f0", 0.0, 1.0, "comma-separated numbers in [0, 1]")};
+      case FresnelModel::kDielectric: return {eta};
+      case FresnelModel::kConductor: {
+        PointCoordinate k = Coordinate("k", 0.0, 1e3, "comma-separated numbers from 0 to 1000");
+        k.required = false;
+        return {eta, k};
+      }
+    }
+    return {};
+  }
+  std::vector<std::string> CoordinateOptions() const override { return {"f0", "eta", "k"}; }
+
+  std::vector<std::string> ModelOptions() const override { return {"fresnel"}; }
+  Metadata ModelMetadata(const BakeSettings &s) const override {
+    return {{"ndf", "none"}, {"smith", "none"}, {"fresnel", std::string(ToString(s.fresnel))}};
+  }
+  std::string AlphaMetadata(const BakeSettings &) const override { return "n/a"; }
+  std::string DescribeModel(const BakeSettings &s) const override {
+    return "fresnel " + std::string(ToString(s.fresnel));
+  }
+  Metadata PointLabels(const BakeSettings &s) const override {
+    return {{"fresnel", std::string(ToString(s.fresnel))}};
+  }
+  bool ReadModel(const Table &table, BakeSettings *s,
+                 std::vector<std::string> *problems) const override {
+    const std::string fresnel = RequiredMetadata(table, "fresnel", problems);
+    if (fresnel == "schlick" && table.x.name == "F0" && !table.is2D() && table.x.min >= 0.0 &&
+        table.x.max <= 1.0)
+      s->fresnel = FresnelModel::kSchlick;
+    else if (fresnel == "dielectric" && table.x.name == "eta" && !table.is2D() &&
+             table.x.min >= 0.0)
+      s->fresnel = FresnelModel::kDielectric;
+    else if (fresnel == "conductor" && table.x.name == "eta" && table.y.name == "k" &&
+             table.x.min >= 0.0 && table.y.min >= 0.0)
+      s->fresnel = FresnelModel::kConductor;
+    else {
+      problems->push_back("fresnel '" + fresnel + "' with axes " + table.x.name + ", " +
+                          (table.y.name.empty() ? "none" : table.y.name) +
+                          " is not a Favg lutbake writes");
+      return false;
+    }
+    return true;
+  }
+  bool SameModel(const BakeSettings &a, const BakeSettings &b) const override {
+    return a.fresnel == b.fresnel;
+  }
+
+  bool Sampled() const override { return false; }
+  PointValue Evaluate(const BakeSettings &s, double x, double y) const override {
+    return EvaluateFresnelAverage(s.fresnel, x, y);
+  }
+  uint64_t SamplesPerTexel(const BakeSettings &) const override { return 0; }
+  std::string QuadratureBound(const BakeSettings &) const override {
+    return "Gauss-Kronrod error estimate";
+  }
+
+  std::optional<MonotonicClaim> Monotonic(const BakeSettings &s) const override {
+    MonotonicClaim claim;
+    switch (s.fresnel) {
+      case FresnelModel::kSchlick:
+        claim.direction = +1;
+        claim.claim = "F_avg increasing in F0";
+        break;
+      case FresnelModel::kDielectric:
+        claim.direction = +1;
+        claim.from = 1.0;
+        claim.claim = "F_avg increasing in eta for eta >= 1";
+        break;
+      case FresnelModel::kConductor:
+        claim.skipped =
+            "conductor F_avg is not monotonic in k for small eta (eta 0.1: it falls as k grows "
+            "from 0), so nothing is claimed";
+        break;
+    }
+    return claim;
+  }
+  std::optional<ClosedForm> Closed(const BakeSettings &s) const override {
+    if (s.fresnel != FresnelModel::kSchlick) return {};
+    return ClosedForm{"Schlick F_avg", "20/21 F0 + 1/21",
+                      [](double f0, double) { return f0 * (20.0 / 21.0) + 1.0 / 21.0; }};
+  }
+
+  PlanRole Role() const override { return PlanRole::kFresnelAverage; }
+  HeaderText Header(const Table &table) const override {
+    HeaderText text;
+    text.lookupComment = "Average Fresnel F_avg at the Fresnel parameter(s) " + table.x.name +
+                         (table.is2D() ? " and " + table.y.name : std::string()) + ".";
+    return text;
+  }
+};
+
+}  // namespace
+
+const TableDefinition &FresnelAverageTable() {
+  static const FresnelAverage table;
+  return table;
+}
+
+}  // namespace lutbake

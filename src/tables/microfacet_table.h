@@ -1,0 +1,38 @@
+// What the single-scattering microfacet tables (E, Eavg, dfg) share: the
+// model (NDF and Smith form, F = 1), the roughness convention alpha =
+// perceptualRoughness^2, reading both back from a file. Private to the
+// tables layer.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "lutbake/tables/table_definition.h"
+
+namespace lutbake {
+
+class MicrofacetTable : public TableDefinition {
+ public:
+  std::vector<std::string> ModelOptions() const override { return {"ndf", "smith"}; }
+  Metadata ModelMetadata(const BakeSettings &s) const override;
+  std::string AlphaMetadata(const BakeSettings &) const override {
+    return "alpha = perceptualRoughness^2";
+  }
+  std::string DescribeModel(const BakeSettings &s) const override;
+  bool ReadModel(const Table &table, BakeSettings *s,
+                 std::vector<std::string> *problems) const override;
+  bool SameModel(const BakeSettings &a, const BakeSettings &b) const override {
+    return a.ndf == b.ndf && a.smith == b.smith;
+  }
+
+ protected:
+  // The roughness axis of a point: "roughness", perceptual roughness r in
+  // {0} or [sqrt(kMinimumAlpha), 1] (alpha = r^2; 0 is the mirror, exact).
+  static PointCoordinate RoughnessCoordinate();
+  // The view cosine: "mu" in [0, 1] (0 is the grazing limit).
+  static PointCoordinate MuCoordinate();
+  // The header notes of a table over perceptual roughness.
+  static void AddRoughnessNotes(HeaderText *text);
+};
+
+}  // namespace lutbake

@@ -1,0 +1,45 @@
+#include "lutbake/tables/table_definition.h"
+
+#include <cstring>
+
+#include "lutbake/core/hash.h"
+
+namespace lutbake {
+
+std::vector<std::string> TableDefinition::CoordinateOptions() const {
+  std::vector<std::string> options;
+  for (const PointCoordinate &c : Coordinates(BakeSettings{})) options.push_back(c.option);
+  return options;
+}
+
+uint64_t TableDefinition::SamplesPerTexel(const BakeSettings &s) const {
+  return !Sampled() || IsQuadrature(s.estimator) ? 0 : s.samples;
+}
+
+std::string TableDefinition::QuadratureDescription(const BakeSettings &s) const {
+  return s.estimator == Estimator::kAdaptiveQuadrature
+             ? "adaptive Gauss-Kronrod quadrature"
+             : "panel Gauss-Legendre quadrature over the half vector, two orders";
+}
+
+std::string TableDefinition::QuadratureBound(const BakeSettings &s) const {
+  if (s.estimator == Estimator::kAdaptiveQuadrature)
+    return FormatDouble(kQuadratureErrorFactor) + " x the Gauss-Kronrod estimate + 1e-10";
+  return "quadrature texels: |V_k - V_(k-1)| + 1e-10 of the panel rule at two orders";
+}
+
+std::string RequiredMetadata(const Table &table, const std::string &key,
+                             std::vector<std::string> *problems) {
+  const std::string *v = table.FindMetadata(key);
+  if (!v) problems->push_back("key '" + key + "' missing");
+  return v ? *v : std::string();
+}
+
+uint64_t PointSeed(uint64_t tableSeedId, double x, double y, uint64_t seed) {
+  uint64_t xBits, yBits;
+  std::memcpy(&xBits, &x, sizeof x);
+  std::memcpy(&yBits, &y, sizeof y);
+  return HashValues({tableSeedId, xBits, yBits, seed});
+}
+
+}  // namespace lutbake
