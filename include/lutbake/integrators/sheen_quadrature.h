@@ -1,0 +1,59 @@
+// The directional albedo of the sheen lobe (models/sheen.h) and its cosine-
+// weighted average, with proved-by-construction error bounds:
+//
+//   E(mu_o) = integral over the upper hemisphere of D(h) V(o, i) mu_i d(omega_i),
+//   E_avg   = 2 int_0^1 E(mu) mu dmu.
+//
+// Domain: alpha in [0, 1], mu_o in [0, 1]. As alpha -> 0 the Charlie lobe
+// D = (2 + q) sin(theta_h)^q / (2 pi) (q = 1 / alpha) collapses onto the
+// horizon of h: only half vectors with cos(theta_h) <~ sqrt(alpha) keep any
+// weight, and a light above the horizon needs cos(theta_h) >= mu_o / 2
+// (theta_h <= (theta_o + pi/2) / 2), so E(mu_o > 0) <= C q^(3/2) (1 -
+// mu_o^2 / 4)^(q / 2) -> 0: alpha = 0 gives E = 0 exactly for mu_o > 0. At
+// mu_o = 0 the limit diverges instead (E ~ alpha^(-1/2) for ashikhmin), and
+// the Charlie visibility's 1 / mu_o makes E ~ C / mu_o infinite at mu_o = 0
+// for every alpha: those points throw std::domain_error. Everything else
+// returns a finite value and a bound, down to alpha = 1e-24 and mu_o =
+// 1e-300; a value beyond the range of double throws std::domain_error.
+//
+// Bounds are absolute; the target is tolerance * max(1, value) (E exceeds 1
+// where the lobe meets a grazing view).
+#pragma once
+
+#include <cstdint>
+
+#include "lutbake/models/sheen.h"
+
+namespace lutbake {
+
+struct SheenIntegral {
+  double value = 0.0;
+  double bound = 0.0;        // |value - exact| <= bound
+  uint64_t evaluations = 0;  // integrand evaluations (D at a node), all levels
+  bool exact = false;        // value is the exact integral (alpha = 0)
+};
+
+// The default integrator: a Gauss-Legendre product rule over the light
+// direction (mu_i, phi) on panels placed from the integrand's known features,
+// at two orders; see sheen_quadrature.cpp for the panels and the bound.
+// bound <= tolerance * max(1, value) whenever the finest order reaches it.
+SheenIntegral IntegrateSheenAlbedo(SheenVisibility visibility, double alpha, double mu_o,
+                                   double tolerance);
+// E_avg by Gauss panels in mu, E at each node by the rule above.
+SheenIntegral IntegrateSheenAlbedoAverage(SheenVisibility visibility, double alpha,
+                                          double tolerance);
+
+// The independent reference: the half vector (theta_h, phi_h), with theta_h
+// through the lobe's own variable v = -(q/2) log(sin^2(theta_h)) (D cos(theta_h)
+// d(omega_h) = (1 + 2 alpha) exp(-(1 + 2 alpha) v) dv d(phi_h) / (2 pi)), the
+// Jacobian d(omega_i) = 4 (o.h) d(omega_h) and the light kept above the
+// horizon by the inner range; nested adaptive Gauss-Kronrod (gauss_kronrod.h).
+// Bound: 16 x the sums of |K15 - G7| of both levels (the outer one and the
+// integral of the inner ones). Used by the tests (and meant for `lutbake
+// check`) to judge the default.
+SheenIntegral IntegrateSheenAlbedoAdaptive(SheenVisibility visibility, double alpha, double mu_o,
+                                           double tolerance);
+SheenIntegral IntegrateSheenAlbedoAverageAdaptive(SheenVisibility visibility, double alpha,
+                                                  double tolerance);
+
+}  // namespace lutbake
