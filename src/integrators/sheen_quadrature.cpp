@@ -635,15 +635,19 @@ std::vector<MuPanel> AverageLayout(SheenVisibility visibility, double alpha, dou
   if (charlie) {
     PushPowerPanels(0.0, h0, c, &panels);
   } else {
-    // E is at most its value at grazing view, bounded by U(0); the first
-    // panel [0, h] holds at most 2 h^2 U / 2 of E_avg.
+    // E near grazing view is of the size of U(0), its bound there; E's
+    // singular terms at mu = 0 (the pole of W reaching mu_i = 0, h = n
+    // reaching the horizon) are O(mu log mu), so the first panel [0, h],
+    // integrated like the others, is graded down only until it holds
+    // ~h^2 U <= kConeShare negligible masses of E_avg (the level difference
+    // measures its error).
+    (void)neglected;
     Problem t = MakeProblem(visibility, alpha, 0.0);
     const double U = Scaled(MassBound(t, 0.0, 1.0), t.logS);
-    const double hNeg = std::sqrt(negligible / std::max(U, 1e-300));
+    const double hNeg = std::sqrt(kConeShare * negligible / std::max(U, 1e-300));
     double h = h0;
     while (0.5 * h > hNeg && h > 1e-300) h *= 0.5;
     if (h < h0) {
-      *neglected += h * h * U;
       panels.push_back({0.0, h, 0, 1.0});
       PushGraded(h, h0, h, 0.0, maxLength, &panels);
     } else {
