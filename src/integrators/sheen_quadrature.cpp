@@ -608,14 +608,19 @@ SheenIntegral IntegrateSheenAlbedo(SheenVisibility visibility, double alpha, dou
 // finite at 0 and the same y = mu^c panels as above are used at both ends;
 // ashikhmin: panels graded by 2 toward 0 from the lobe scale (E has the pole
 // of W at mu_i = -mu_o / (1 - mu_o) approaching its range) down to where
-// their mass bound 2 h^2 U is negligible, and u^2-mapped at 1 (s_o). None
-// longer than min(1/4, 2 sqrt(alpha)), and none past the end of the lobe,
-// where the rest of E_avg is at most
+// h^2 U(0) is 1e5 negligible masses (AverageLayout), and u^2-mapped at 1
+// (s_o). None longer than min(1/4, 2 sqrt(alpha)), and none past the end of
+// the lobe, where the rest of E_avg is at most
 //   int_mu^1 2 mu E <= pi K (1 - mu) (1 + mu^2 / (1 + s)^2)^(-p)
 // (mu W_max <= 1/4 for both; the J integral at most pi dhatmax(mu_o, 0)).
 // The negligible masses of the nodes' E are budgeted so that they add up to
 // 1e-3 tolerance over the rule: node j (weight w_j) gets
-// 1e-3 tolerance / (2 mu_j w_j N), N the number of nodes.
+// 1e-3 tolerance / (2 mu_j w_j N), N the number of nodes. The bound is the
+// sum over mu panels of |V_k - V_(k-1)|, plus the tail, the nodes'
+// neglected masses (weighted) and 1e-12 max(1, V). Measured against
+// tests/data/sheen: within every bound at 1e-8 and 1e-10, 3 to 16 ms a value
+// (2.4 to 10 ms at 1e-8 for the ten tabulated alphas; 32 texels of r^2: mean
+// 3.8 ms charlie, 4.3 ms ashikhmin).
 
 namespace {
 
