@@ -55,6 +55,7 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
       ->capture_default_str()
       ->check(ListOf(TableNames()));
   AddModelOptions(app, o.ndf, o.smith);
+  AddSheenOptions(app, o.sheenVisibility, o.sheenAlpha);
   app.add_option("--fresnel", o.fresnel,
                  "Fresnel model of the Favg table: schlick (axis F0 in [0,1]), dielectric (exact, "
                  "axis eta in [1,3]), conductor (exact, axes eta in [0,4] x k in [0,10])")
@@ -135,6 +136,8 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
   settings.ndf = ParseNdf(o.ndf);
   settings.smith = ParseSmith(o.smith);
   settings.fresnel = ParseFresnel(o.fresnel);
+  ParseSheenVisibility(o.sheenVisibility, &settings.sheenVisibility);
+  ParseSheenAlpha(o.sheenAlpha, &settings.sheenAlpha);
   if (o.size > 0) settings.size = o.size;
   if (const int status = ApplySamplingOptions("bake", o.sampling, &settings)) return status;
   const bool tolerance = settings.tolerance > 0.0;
@@ -219,6 +222,14 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
       jobs.push_back(job);
     }
   }
+  // An estimator a table has no sampler for is a usage error, before any work.
+  for (const BakeJob &job : jobs)
+    if (const std::string problem = job.table->EstimatorProblem(job.settings.estimator);
+        !problem.empty()) {
+      std::cerr << "lutbake bake: --estimator " << ToString(job.settings.estimator) << ": "
+                << problem << "\n";
+      return 2;
+    }
   std::vector<std::unique_ptr<TableWriter>> writers;
   for (const std::string &name : SplitList(o.formats)) writers.push_back(MakeWriter(name));
 

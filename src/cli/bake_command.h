@@ -17,6 +17,8 @@ struct BakeOptions {
   std::string ndf = "ggx";
   std::string smith = "correlated";
   std::string fresnel = "schlick";
+  std::string sheenVisibility = "charlie";
+  std::string sheenAlpha = "linear";
   int size = 0;  // 0: the per-table defaults
   SamplingOptions sampling;
   bool errorMap = false;

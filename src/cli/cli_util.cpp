@@ -141,6 +141,20 @@ void AddModelOptions(CLI::App &app, std::string &ndf, std::string &smith) {
       ->check(OneOf({"correlated", "separable"}));
 }
 
+void AddSheenOptions(CLI::App &app, std::string &visibility, std::string &alpha) {
+  app.add_option("--sheen-visibility", visibility,
+                 "sheen_E, sheen_Eavg: charlie (Estevez-Kulla's fitted Lambda, as glTF's "
+                 "KHR_materials_sheen gives it) or ashikhmin (1 / (4 (mu_i + mu_o - mu_i mu_o)))")
+      ->capture_default_str()
+      ->check(OneOf({"charlie", "ashikhmin"}));
+  app.add_option("--sheen-alpha", alpha,
+                 "sheen_E, sheen_Eavg: the Charlie alpha from the roughness axis r "
+                 "(sheenRoughness): linear alpha = r, squared alpha = r^2 (Filament's cloth, and "
+                 "the glTF extension's sample code)")
+      ->capture_default_str()
+      ->check(OneOf({"linear", "squared"}));
+}
+
 void AddSeedOption(CLI::App &app, uint64_t &seed, const std::string &seedHelp) {
   app.add_option("--seed", seed, seedHelp)
       ->capture_default_str()

@@ -51,6 +51,8 @@ int PrepareOutputOrComplain(const std::string &command, const std::string &dir, 
 // --ndf (ggx, beckmann) and --smith (correlated, separable), shared by the
 // subcommands that integrate the microfacet BRDF.
 void AddModelOptions(CLI::App &app, std::string &ndf, std::string &smith);
+// --sheen-visibility and --sheen-alpha: the model of the sheen tables.
+void AddSheenOptions(CLI::App &app, std::string &visibility, std::string &alpha);
 
 // --seed S (any unsigned 64-bit integer) and --threads N (1 to 1024, default
 // all cores), as every subcommand spells them; `seedHelp` says what it seeds,

@@ -106,6 +106,7 @@ void SetupEvalCommand(CLI::App &app, EvalOptions &o) {
       ->type_name("LIST")
       ->check(RealList({0.0, 1e3, "comma-separated numbers from 0 to 1000"}));
   AddModelOptions(app, o.ndf, o.smith);
+  AddSheenOptions(app, o.sheenVisibility, o.sheenAlpha);
   AddSamplingOptions(app, o.sampling, "point");
   AddThreadsOption(app, o.threads);
   app.add_flag("--json", o.json,
@@ -133,11 +134,13 @@ int RunEval(const EvalOptions &o, CLI::App &app) {
   settings.ndf = ParseNdf(o.ndf);
   settings.smith = ParseSmith(o.smith);
   settings.fresnel = ParseFresnel(o.fresnel);
+  ParseSheenVisibility(o.sheenVisibility, &settings.sheenVisibility);
+  ParseSheenAlpha(o.sheenAlpha, &settings.sheenAlpha);
 
   // Options that choose a model the table does not have are refused, so
   // that a typo cannot go unnoticed.
   const std::vector<std::string> models = table.ModelOptions();
-  for (const char *option : {"ndf", "smith", "fresnel"})
+  for (const char *option : {"ndf", "smith", "fresnel", "sheen-visibility", "sheen-alpha"})
     if (app.count(std::string("--") + option) > 0 &&
         std::find(models.begin(), models.end(), option) == models.end())
       return complain(std::string("--") + option + " does not apply to --table " + name);
@@ -190,6 +193,8 @@ int RunEval(const EvalOptions &o, CLI::App &app) {
     values.push_back(Reals(list));
   }
   if (const int status = ApplySamplingOptions("eval", o.sampling, &settings)) return status;
+  if (const std::string problem = table.EstimatorProblem(settings.estimator); !problem.empty())
+    return complain("--estimator " + std::string(ToString(settings.estimator)) + ": " + problem);
 
   // Row-major, as a table stores them: y outer, x inner.
   const std::vector<double> &xs = values[0];

@@ -18,6 +18,8 @@ struct EvalOptions {
   std::string ndf = "ggx";
   std::string smith = "correlated";
   std::string fresnel = "schlick";
+  std::string sheenVisibility = "charlie";
+  std::string sheenAlpha = "linear";
   SamplingOptions sampling;
   int threads = 0;
   bool json = false;

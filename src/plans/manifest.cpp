@@ -49,8 +49,9 @@ std::optional<bool> Lighting(const Json &object, const char *key, const Place &p
 MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
                           const std::string &name) {
   json_input::RequireObject(m, place);
-  json_input::OnlyKeys(
-      m, place, {"name", "ndf", "smith", "roughness", "fresnel", "ibl", "compensation", "unlit"});
+  json_input::OnlyKeys(m, place,
+                       {"name", "ndf", "smith", "roughness", "fresnel", "ibl", "compensation",
+                        "unlit", "sheenRoughness"});
   MaterialSpec out;
   out.source = name;
   out.where = place.Text();
@@ -91,6 +92,15 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
       }
   } else if (!out.unlit) {
     place.Fail("no \"roughness\": give a number, a list or {\"min\", \"max\"} in [0, 1]");
+  }
+  // A sheen layer (KHR_materials_sheen's sheenRoughness: no snapping, the
+  // sheen tables take all of [0, 1]).
+  if (const Json *v = Member(m, "sheenRoughness")) {
+    const ParameterUse r = Parameter(*v, place.Child("sheenRoughness"), 0.0, 1.0);
+    if (r.range())
+      out.sheenRoughness.push_back({"sheen", r.min, r.max});
+    else
+      for (double x : r.values) out.sheenRoughness.push_back({"sheen", x, x});
   }
 
   if (const Json *f = Member(m, "fresnel")) {

@@ -111,10 +111,13 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
   using Model = std::pair<NdfKind, SmithForm>;
   std::map<Model, Uses> compensated, ibl;
   std::map<FresnelModel, std::pair<Uses, Uses>> fresnel;  // eta, k
+  Uses sheen;  // sheen roughness of the materials with a sheen layer
   int lit = 0, litSchlickCompensated = 0;
   for (const MaterialSpec &m : materials) {
     if (m.unlit) continue;
     for (const std::string &f : m.unsupported) plan.unsupported.push_back({m.name, f});
+    for (const RoughnessUse &r : m.sheenRoughness)
+      sheen.Add(r.min, r.max), sheen.AddMaterial(m.name);
     if (m.roughness.empty()) continue;  // no specular lobe
     ++lit;
     const bool usesIbl = options.ibl && m.ibl.value_or(options.defaultIbl.value_or(true));
@@ -146,10 +149,11 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
   // A table over the roughness its materials use: its default axes, the
   // roughness axis narrowed (or listed).
   const auto roughnessTable = [&](const TableDefinition &table, const Model &model,
-                                  const Uses &uses) {
+                                  const Uses &uses, bool modelSuffix = true) {
     PlannedTable t;
     t.definition = &table;
-    t.name = std::string(table.Name()) + (variants ? Suffix(model.first, model.second) : "");
+    t.name = std::string(table.Name()) +
+             (variants && modelSuffix ? Suffix(model.first, model.second) : "");
     t.ndf = model.first;
     t.smith = model.second;
     t.roughness = uses.Cover(options.maxListedRoughness);
@@ -187,6 +191,12 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
   for (const auto &[model, uses] : ibl)
     for (const TableDefinition *table : TablesFor(PlanRole::kImageBasedLighting))
       roughnessTable(*table, model, uses);
+  // The sheen tables do not depend on the base layer's model: one of each,
+  // over every sheen roughness (the bake's --sheen-visibility and
+  // --sheen-alpha choose their model).
+  if (!sheen.materials.empty())
+    for (const TableDefinition *table : TablesFor(PlanRole::kSheenAlbedoScaling))
+      roughnessTable(*table, Model{NdfKind::kGgx, SmithForm::kCorrelated}, sheen, false);
 
   // Why each table that is not planned is left out.
   const auto has = [&](PlanRole role) {
@@ -231,6 +241,11 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
   if (!has(PlanRole::kImageBasedLighting))
     omit(PlanRole::kImageBasedLighting,
          offReason(options.ibl, options.defaultIbl, "--no-ibl", "image-based lighting"));
+  if (!has(PlanRole::kSheenAlbedoScaling))
+    omit(PlanRole::kSheenAlbedoScaling,
+         !nothingLit.empty() ? nothingLit
+                             : "no material has a sheen layer (KHR_materials_sheen with a "
+                               "sheenColorFactor above 0, or a manifest's \"sheenRoughness\")");
   return plan;
 }
 
@@ -266,6 +281,8 @@ std::string PlanJson(const BakePlan &plan) {
       j["fresnel"] = ToString(t.fresnel);
       j["eta"] = CoveredJson(t.eta);
       if (t.fresnel == FresnelModel::kConductor) j["k"] = CoveredJson(t.k);
+    } else if (t.definition->Role() == PlanRole::kSheenAlbedoScaling) {
+      j["sheenRoughness"] = CoveredJson(t.roughness);
     } else {
       j["ndf"] = ToString(t.ndf);
       j["smith"] = ToString(t.smith);
@@ -313,6 +330,11 @@ std::string PlanJson(const BakePlan &plan) {
     j["roughness"] = Json::array();
     for (const RoughnessUse &r : m.roughness)
       j["roughness"].push_back({{"layer", r.layer}, {"min", r.min}, {"max", r.max}});
+    if (!m.sheenRoughness.empty()) {
+      j["sheenRoughness"] = Json::array();
+      for (const RoughnessUse &r : m.sheenRoughness)
+        j["sheenRoughness"].push_back({{"min", r.min}, {"max", r.max}});
+    }
     j["unsupported"] = m.unsupported;
     j["notes"] = m.notes;
     out["materials"].push_back(j);
@@ -334,6 +356,8 @@ std::string DescribePlan(const BakePlan &plan) {
     s << "  (";
     if (t.definition->Role() == PlanRole::kFresnelAverage)
       s << ToString(t.fresnel);
+    else if (t.definition->Role() == PlanRole::kSheenAlbedoScaling)
+      s << "charlie sheen";
     else
       s << ToString(t.ndf) << ", " << ToString(t.smith);
     s << ")\n    " << ShortAxis(t.x);

@@ -81,7 +81,6 @@ struct Extension {
 
 // Extensions whose lobes need tables lutbake does not bake.
 constexpr Extension kUnsupported[] = {
-    {"KHR_materials_sheen", "sheenColorFactor", "sheenColorTexture", 0.0},
     {"KHR_materials_transmission", "transmissionFactor", "transmissionTexture", 0.0},
     {"KHR_materials_volume", "thicknessFactor", "thicknessTexture", 0.0},
     {"KHR_materials_anisotropy", "anisotropyStrength", "anisotropyTexture", 0.0},
@@ -219,6 +218,31 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
     }
   }
 
+  // KHR_materials_sheen: the sheen layer needs sheen_E over its roughness.
+  // Its colour texture multiplies sheenColorFactor and the roughness
+  // texture's alpha multiplies sheenRoughnessFactor: factor 0 is off (no
+  // sheen) or covers [0, factor] with a texture.
+  if (const Json *sheen = ext("KHR_materials_sheen")) {
+    const Place at = extPlace.Child("KHR_materials_sheen");
+    json_input::RequireObject(*sheen, at);
+    double color[3] = {0.0, 0.0, 0.0};
+    if (const Json *c = Member(*sheen, "sheenColorFactor")) {
+      const Place cp = at.Child("sheenColorFactor");
+      json_input::RequireArray(*c, cp);
+      if (c->size() != 3) cp.Fail("expected 3 numbers, found " + std::to_string(c->size()));
+      for (size_t i = 0; i < 3; ++i) color[i] = json_input::Number((*c)[i], cp.Child(i), 0.0, 1.0);
+    }
+    const bool colorTexture = Texture(*sheen, "sheenColorTexture", at);
+    const double r = Factor(*sheen, "sheenRoughnessFactor", at, 0.0);
+    const bool roughnessTexture = Texture(*sheen, "sheenRoughnessTexture", at);
+    if (color[0] > 0.0 || color[1] > 0.0 || color[2] > 0.0)
+      out.sheenRoughness.push_back({"sheen", roughnessTexture ? 0.0 : r, r});
+    else
+      out.notes.push_back(std::string("KHR_materials_sheen with sheenColorFactor 0") +
+                          (colorTexture ? " (the texture multiplies it)" : "") +
+                          ": no sheen layer");
+  }
+
   if (extensions) {
     for (const Extension &e : kUnsupported)
       if (const Json *v = ext(e.name)) {
@@ -232,7 +256,7 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
       const std::string &key = it.key();
       bool known = key == "KHR_materials_unlit" || key == "KHR_materials_ior" ||
                    key == "KHR_materials_specular" || key == "KHR_materials_clearcoat" ||
-                   key == "KHR_materials_pbrSpecularGlossiness";
+                   key == "KHR_materials_pbrSpecularGlossiness" || key == "KHR_materials_sheen";
       for (const Extension &e : kUnsupported) known = known || key == e.name;
       bool harmless = false;
       for (const char *h : kHarmless) harmless = harmless || key == h;

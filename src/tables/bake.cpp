@@ -155,6 +155,8 @@ Table BakeTableOn(const TableDefinition &definition, const BakeSettings &s, cons
     estimatorText =
         std::string(ToString(s.estimator)) +
         (random ? " with independent random points" : " with Owen-scrambled Sobol points");
+  if (sampled && !definition.SamplerNote(s).empty())
+    estimatorText += "; " + definition.SamplerNote(s);
   if (tolerance && s.allowQuadratureSwitch)
     estimatorText += "; texels for which the quadrature is cheaper switch to it";
   m.emplace_back("estimator", estimatorText);
@@ -179,9 +181,9 @@ Table BakeTableOn(const TableDefinition &definition, const BakeSettings &s, cons
   char bound[320];
   std::snprintf(bound, sizeof bound,
                 "sampled texels: %.3f standard errors (Student t, %d dof, two-sided 99%%) from the "
-                "spread of %d independent %s, plus 4.6 / N for events no sample met",
+                "spread of %d independent %s, plus %s for events no sample met",
                 StudentT99(replicates - 1), replicates - 1, replicates,
-                random ? "random point sets" : "scrambles");
+                random ? "random point sets" : "scrambles", definition.UnseenEventTerm().c_str());
   // Sampled texels that switch go to the default quadrature.
   BakeSettings quadrature = s;
   quadrature.estimator = Estimator::kQuadrature;

@@ -6,9 +6,11 @@
 
 namespace lutbake {
 
-const TableDefinition &DirectionalAlbedoTable();  // E.cpp
-const TableDefinition &AverageAlbedoTable();      // Eavg.cpp
-const TableDefinition &FresnelAverageTable();     // Favg.cpp
-const TableDefinition &SplitSumTable();           // dfg.cpp
+const TableDefinition &DirectionalAlbedoTable();   // E.cpp
+const TableDefinition &AverageAlbedoTable();       // Eavg.cpp
+const TableDefinition &FresnelAverageTable();      // Favg.cpp
+const TableDefinition &SplitSumTable();            // dfg.cpp
+const TableDefinition &SheenAlbedoTable();         // sheen_E.cpp
+const TableDefinition &SheenAverageAlbedoTable();  // sheen_Eavg.cpp
 
 }  // namespace lutbake

@@ -9,10 +9,8 @@ namespace lutbake {
 
 const std::vector<const TableDefinition *> &AllTables() {
   static const std::vector<const TableDefinition *> tables = {
-      &DirectionalAlbedoTable(),
-      &AverageAlbedoTable(),
-      &FresnelAverageTable(),
-      &SplitSumTable(),
+      &DirectionalAlbedoTable(), &AverageAlbedoTable(), &FresnelAverageTable(),
+      &SplitSumTable(),          &SheenAlbedoTable(),   &SheenAverageAlbedoTable(),
   };
   return tables;
 }

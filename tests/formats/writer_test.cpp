@@ -157,10 +157,10 @@ TEST(CppHeaderWriter, CompilesWithWerrorAndLooksUpExactly) {
             std::snprintf(line, sizeof line,
                           "  fail += engine::luts::lookup_dfg(%.9gf, %.9gf)[%d] != %.9gf;\n", fx,
                           fy, c, expected);
-          else if (kind == &TableNamed("E"))
+          else if (t.is2D())
             std::snprintf(line, sizeof line,
-                          "  fail += engine::luts::lookup_E(%.9gf, %.9gf) != %.9gf;\n", fx, fy,
-                          expected);
+                          "  fail += engine::luts::lookup_%s(%.9gf, %.9gf) != %.9gf;\n",
+                          kind->Name(), fx, fy, expected);
           else
             std::snprintf(line, sizeof line, "  fail += engine::luts::lookup_%s(%.9gf) != %.9gf;\n",
                           kind->Name(), fx, expected);
@@ -202,7 +202,8 @@ TEST(CppHeaderWriter, CompilesWithWerrorAndLooksUpExactly) {
             std::string(LutbakeVersion()) + "\");\n";
   ExpectHeadersPass(dir,
                     "#include <string_view>\n#include \"E.h\"\n#include \"Eavg.h\"\n#include "
-                    "\"Favg.h\"\n#include \"dfg.h\"\n#include \"Eavg_quoted.h\"\n",
+                    "\"Favg.h\"\n#include \"dfg.h\"\n#include \"sheen_E.h\"\n#include "
+                    "\"sheen_Eavg.h\"\n#include \"Eavg_quoted.h\"\n",
                     checks);
   fs::remove_all(dir);
 }

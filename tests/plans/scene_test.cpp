@@ -96,7 +96,11 @@ TEST(SceneReader, ClearcoatCountsWhenItsFactorIsPositive) {
 
 TEST(SceneReader, RecognisesWhatItCannotBake) {
   const auto ms = ReadSceneMaterials(kPlans + "unsupported.gltf");
-  EXPECT_EQ(Named(ms, "velvet").unsupported, std::vector<std::string>{"KHR_materials_sheen"});
+  // KHR_materials_sheen is baked (issue 14): a sheen layer of roughness 0.3.
+  EXPECT_TRUE(Named(ms, "velvet").unsupported.empty());
+  ASSERT_EQ(Named(ms, "velvet").sheenRoughness.size(), 1u);
+  EXPECT_EQ(Named(ms, "velvet").sheenRoughness[0].min, 0.3);
+  EXPECT_EQ(Named(ms, "velvet").sheenRoughness[0].max, 0.3);
   EXPECT_EQ(Named(ms, "glass").unsupported,
             (std::vector<std::string>{"KHR_materials_transmission", "KHR_materials_volume"}));
   EXPECT_EQ(Named(ms, "brushed").unsupported, std::vector<std::string>{"KHR_materials_anisotropy"});
@@ -152,11 +156,14 @@ TEST(SceneReader, KhronosSampleScenes) {
   EXPECT_EQ(Named(cc, "Simple_Coated").roughness.at(1).min, 0.03);
   EXPECT_EQ(Named(cc, "RoughVariations_Coated").roughness.at(1).max, 1.0);
   EXPECT_EQ(Named(cc, "RoughVariations_Coated").roughness.at(1).min, 0.0);
-  // CompareSheen and CompareIor: the features lutbake does not bake.
+  // CompareSheen: a sheen layer (sheenRoughnessFactor 0.3, no roughness
+  // texture), baked as sheen_E; CompareIor: features lutbake does not bake.
   const auto sheen = ReadSceneMaterials(kScenes + "CompareSheen.gltf");
-  EXPECT_EQ(Named(sheen, "glTF Logo Sheen").unsupported,
-            std::vector<std::string>{"KHR_materials_sheen"});
+  EXPECT_TRUE(Named(sheen, "glTF Logo Sheen").unsupported.empty());
+  ASSERT_EQ(Named(sheen, "glTF Logo Sheen").sheenRoughness.size(), 1u);
+  EXPECT_EQ(Named(sheen, "glTF Logo Sheen").sheenRoughness[0].max, 0.3);
   EXPECT_TRUE(Named(sheen, "glTF Logo").unsupported.empty());
+  EXPECT_TRUE(Named(sheen, "glTF Logo").sheenRoughness.empty());
   const auto ior = ReadSceneMaterials(kScenes + "CompareIor.gltf");
   EXPECT_EQ(Named(ior, "glTF Logo Transmission IOR").unsupported,
             (std::vector<std::string>{"KHR_materials_transmission", "KHR_materials_volume"}));

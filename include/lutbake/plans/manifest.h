@@ -19,7 +19,10 @@
 //                                                           in [0, 20]
 //                                                           //   each a number, list or {min, max}
 //         "ibl": true, "compensation": true,                // optional, per material
-//         "unlit": false                                    // optional: true needs no table
+//         "unlit": false,                                   // optional: true needs no table
+//         "sheenRoughness": 0.5                             // optional: a sheen layer
+//                                                           //   (KHR_materials_sheen), as
+//                                                           //   "roughness" but never snapped
 //       }
 //     ]
 //   }

@@ -66,6 +66,9 @@ struct MaterialSpec {
   // lobe at all (say, glTF metallic 0 with specularFactor 0).
   std::vector<RoughnessUse> roughness;
   FresnelUse fresnel;
+  // The sheen roughness (glTF KHR_materials_sheen's sheenRoughness, layer
+  // "sheen") of a material with a sheen; empty without one.
+  std::vector<RoughnessUse> sheenRoughness;
   // Per-material lighting; unset means "as the manifest or command line says".
   std::optional<bool> ibl;
   std::optional<bool> compensation;

@@ -21,7 +21,11 @@
 //   KHR_materials_pbrSpecularGlossiness (archived) roughness = 1 - glossiness,
 //                         glossiness = glossinessFactor (default 1) times the
 //                         texture's alpha: [1 - factor, 1] with the texture.
-//   KHR_materials_sheen, _transmission, _volume, _anisotropy, _iridescence
+//   KHR_materials_sheen   a sheen layer (sheen_E) of roughness
+//                         sheenRoughnessFactor (default 0; times its
+//                         texture's alpha: [0, factor]), present when a
+//                         component of sheenColorFactor (default 0) is > 0.
+//   KHR_materials_transmission, _volume, _anisotropy, _iridescence
 //                         need tables lutbake does not bake: reported as
 //                         unsupported (also when their factors switch them
 //                         off; a note says so).

@@ -10,6 +10,7 @@
 
 #include "lutbake/models/fresnel.h"
 #include "lutbake/models/ndf.h"
+#include "lutbake/models/sheen.h"
 #include "lutbake/models/smith.h"
 
 namespace lutbake {
@@ -88,10 +89,19 @@ inline constexpr uint64_t kDefaultMaxSamples = uint64_t{1} << 26;
 // Default tolerance of the adaptive quadrature outside tolerance runs.
 inline constexpr double kQuadratureDefaultTolerance = 1e-12;
 
+// How the roughness axis r of the sheen tables (glTF's sheenRoughness) maps
+// to the Charlie NDF's alpha: linear alpha = r, squared alpha = r^2.
+enum class SheenAlpha { kLinear, kSquared };
+// "linear", "squared".
+std::string_view ToString(SheenAlpha mapping);
+bool ParseSheenAlpha(std::string_view text, SheenAlpha *mapping);
+
 struct BakeSettings {
   NdfKind ndf = NdfKind::kGgx;
   SmithForm smith = SmithForm::kCorrelated;
   FresnelModel fresnel = FresnelModel::kSchlick;
+  SheenVisibility sheenVisibility = SheenVisibility::kCharlie;
+  SheenAlpha sheenAlpha = SheenAlpha::kLinear;
   Estimator estimator = Estimator::kQuadrature;
   // Texels per axis: tableSizes[name] for a table listed there, else size,
   // else (0) the table's own default (TableDefinition::DefaultSize).

@@ -187,6 +187,17 @@ class TableDefinition {
   // Relative cost of one reference value, for scheduling (E_avg
   // integrates a whole row: high).
   virtual double ReferenceCost() const { return 1.0; }
+  // The estimator `lutbake check` judges the table's texels and points
+  // with: the adaptive quadrature, an independent method, unless the
+  // definition says why not (and what judges it instead).
+  virtual Estimator ReferenceEstimator() const { return Estimator::kAdaptiveQuadrature; }
+  // Why the table cannot use an estimator ("" when it can): sheen has no
+  // cosine-weighted sampler, for one.
+  virtual std::string EstimatorProblem(Estimator) const { return ""; }
+  // What the sampled estimators sample, when their names do not say it
+  // (metadata 'estimator'), and the unseen-event term of their bound.
+  virtual std::string SamplerNote(const BakeSettings &) const { return ""; }
+  virtual std::string UnseenEventTerm() const { return "4.6 / N"; }
 
   // ---- claims ---------------------------------------------------------
   virtual ValueClaim Range(const BakeSettings &) const { return {0.0, 1.0, false, "in [0, 1]"}; }
