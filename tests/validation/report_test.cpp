@@ -41,6 +41,36 @@ TEST(Report, VisibleNormalErrorsFallAndQuadratureIsAccurate) {
   EXPECT_NE(ReportMarkdown(s, rows).find("| vndf |"), std::string::npos);
 }
 
+// A sheen table in a report: the estimator it refuses (cosine) is left out
+// and the Markdown says why; the sampler's error falls with N; the panel rule
+// meets the adaptive reference, in the model asked for (ashikhmin, alpha =
+// r^2, which the header line records).
+TEST(Report, SheenTableSkipsWhatItRefusesAndConverges) {
+  ReportSettings s;
+  s.tables = {&TableNamed("sheen_E")};
+  s.estimators = {Estimator::kCosine, Estimator::kVisibleNormal, Estimator::kQuadrature};
+  s.sheenVisibility = SheenVisibility::kAshikhmin;
+  s.sheenAlpha = SheenAlpha::kSquared;
+  s.size = 4;
+  s.budgetSeconds = 2;
+  const std::vector<ReportRow> rows = RunReport(s);
+  std::vector<ReportRow> sampled, quadrature;
+  for (const ReportRow &r : rows) {
+    EXPECT_NE(r.estimator, Estimator::kCosine);
+    if (r.estimator == Estimator::kVisibleNormal) sampled.push_back(r);
+    if (r.estimator == Estimator::kQuadrature) quadrature.push_back(r);
+  }
+  ASSERT_GE(sampled.size(), 4u);
+  EXPECT_LT(sampled.back().rmsError, 0.5 * sampled.front().rmsError);
+  ASSERT_FALSE(quadrature.empty());
+  EXPECT_LE(quadrature.back().maxError, 1e-9);
+  EXPECT_EQ(quadrature.back().withinBound, 1.0);
+  const std::string md = ReportMarkdown(s, rows);
+  EXPECT_NE(md.find("| cosine | not offered: sheen_E has no cosine-weighted sampler"),
+            std::string::npos);
+  EXPECT_NE(md.find("sheen visibility ashikhmin, sheen alpha squared"), std::string::npos);
+}
+
 TEST(Report, ReferenceAgreesWithIndependentValuesAtTexelPoints) {
   // The report measures against IntegrateReferenceAlbedo at 1e-12; at the
   // independent points of tests/data it must agree to 1e-10 there too.

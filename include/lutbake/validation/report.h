@@ -21,6 +21,8 @@ struct ReportSettings {
   std::vector<Estimator> estimators{std::begin(kAllEstimators), std::end(kAllEstimators)};
   NdfKind ndf = NdfKind::kGgx;
   SmithForm smith = SmithForm::kCorrelated;
+  SheenVisibility sheenVisibility = SheenVisibility::kCharlie;  // the sheen tables' model
+  SheenAlpha sheenAlpha = SheenAlpha::kLinear;
   int size = 32;              // texels per axis of every table
   double budgetSeconds = 60;  // in total, split evenly over table x estimator
   uint64_t seed = 0;
