@@ -36,16 +36,6 @@ namespace lutbake {
 
 namespace {
 
-PointValue FromIntegral(const SheenIntegral &q) {
-  PointValue out;
-  out.value[0] = q.value;
-  out.error[0] = q.bound;
-  out.evaluations = q.evaluations;
-  out.quadrature = true;
-  out.exact = q.exact;
-  return out;
-}
-
 class SheenAlbedo final : public SheenTable {
  public:
   const char *Name() const override { return "sheen_E"; }

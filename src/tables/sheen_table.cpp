@@ -109,6 +109,16 @@ PointCoordinate SheenTable::RoughnessCoordinate() {
   return c;
 }
 
+PointValue SheenTable::FromIntegral(const SheenIntegral &q) {
+  PointValue out;
+  out.value[0] = q.value;
+  out.error[0] = q.bound;
+  out.evaluations = q.evaluations;
+  out.quadrature = true;
+  out.exact = q.exact;
+  return out;
+}
+
 double SheenTable::PanelTolerance(const BakeSettings &s) {
   return s.tolerance > 0.0 ? s.tolerance : kDefaultQuadratureTolerance;
 }

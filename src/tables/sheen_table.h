@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "lutbake/integrators/sheen_quadrature.h"
 #include "lutbake/tables/table_definition.h"
 
 namespace lutbake {
@@ -41,6 +42,8 @@ class SheenTable : public TableDefinition {
   static double AlphaOf(const BakeSettings &s, double r);
   static PointCoordinate RoughnessCoordinate();
   // The bound the panel rule is asked for, and the adaptive reference.
+  // A quadrature result as a point value (one channel).
+  static PointValue FromIntegral(const SheenIntegral &q);
   static double PanelTolerance(const BakeSettings &s);
   static double AdaptiveTolerance(const BakeSettings &s);
   // Header notes on the model and the roughness mapping.
