@@ -13,6 +13,10 @@ namespace {
 
 constexpr size_t kAxisNameBytes = 24;
 constexpr size_t kFixedHeaderBytes = 140;
+// Version 2 (3D tables) has axis z after axis y, so everything after moves
+// by one axis block.
+constexpr size_t kAxisBytes = 48;
+constexpr size_t kFixedHeaderBytes3D = kFixedHeaderBytes + kAxisBytes;
 
 void PutU32(std::string &out, uint32_t v) {
   for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xffu));
@@ -79,16 +83,19 @@ class BinaryWriter final : public TableWriter {
     std::string metadata;
     for (const auto &[key, value] : MetadataForStorage(table, type))
       metadata += key + "=" + value + "\n";
-    std::string nodes;  // the node values of listed axes, x first
-    for (const Axis *axis : {&table.x, &table.y})
-      if (axis->listed() && (axis == &table.x || table.is2D()))
+    const bool threeD = table.is3D();
+    std::string nodes;  // the node values of listed axes, x first, then y, z
+    for (const Axis *axis : {&table.x, &table.y, &table.z})
+      if (axis->listed() &&
+          (axis == &table.x || (axis == &table.y && table.is2D()) || (axis == &table.z && threeD)))
         for (double v : axis->nodes) PutF64(nodes, v);
-    const size_t dataOffset = (kFixedHeaderBytes + metadata.size() + nodes.size() + 7) / 8 * 8;
+    const size_t fixed = threeD ? kFixedHeaderBytes3D : kFixedHeaderBytes;
+    const size_t dataOffset = (fixed + metadata.size() + nodes.size() + 7) / 8 * 8;
     std::string out;
     out.append(kBinaryMagic, sizeof kBinaryMagic);
-    PutU32(out, kBinaryVersion);
+    PutU32(out, threeD ? kBinaryVersion3D : kBinaryVersion);
     PutU32(out, static_cast<uint32_t>(dataOffset));
-    PutU32(out, table.is2D() ? 2 : 1);
+    PutU32(out, threeD ? 3 : table.is2D() ? 2 : 1);
     PutU32(out, static_cast<uint32_t>(table.width()));
     PutU32(out, static_cast<uint32_t>(table.height()));
     PutU32(out, static_cast<uint32_t>(table.channels));
@@ -96,6 +103,7 @@ class BinaryWriter final : public TableWriter {
     PutU32(out, 1);  // error block present
     PutAxis(out, table.x, true);
     PutAxis(out, table.y, table.is2D());
+    if (threeD) PutAxis(out, table.z, true);
     PutU32(out, static_cast<uint32_t>(metadata.size()));
     out += metadata;
     out += nodes;
@@ -126,15 +134,22 @@ Table ReadBinaryTable(const std::string &path) {
   // anywhere (lutbake check reads files it did not write).
   if (in.size() < kFixedHeaderBytes || std::memcmp(in.data(), kBinaryMagic, 8) != 0)
     throw IoError(path + ": not a lutbake .bin file (bad magic)");
-  if (GetU32(in, 8) != kBinaryVersion)
-    throw IoError(path + ": .bin version " + std::to_string(GetU32(in, 8)) +
-                  " (this lutbake reads version " + std::to_string(kBinaryVersion) + ")");
+  const uint32_t version = GetU32(in, 8);
+  if (version != kBinaryVersion && version != kBinaryVersion3D)
+    throw IoError(path + ": .bin version " + std::to_string(version) +
+                  " (this lutbake reads versions " + std::to_string(kBinaryVersion) + " and " +
+                  std::to_string(kBinaryVersion3D) + ")");
+  const bool threeD = version == kBinaryVersion3D;
+  const size_t fixed = threeD ? kFixedHeaderBytes3D : kFixedHeaderBytes;
+  if (in.size() < fixed) throw IoError(path + ": truncated header");
   const size_t dataOffset = GetU32(in, 12);
   Table table;
   const uint32_t dims = GetU32(in, 16);
   const uint32_t width = GetU32(in, 20), height = GetU32(in, 24), channels = GetU32(in, 28);
   const uint32_t valueType = GetU32(in, 32), flags = GetU32(in, 36);
-  if (dims != 1 && dims != 2) throw IoError(path + ": dimensions must be 1 or 2");
+  if (threeD ? dims != 3 : (dims != 1 && dims != 2))
+    throw IoError(path + (threeD ? ": a version 2 file has 3 dimensions"
+                                 : ": dimensions must be 1 or 2 (version 1)"));
   if (channels != 1 && channels != 2) throw IoError(path + ": channels must be 1 or 2");
   if (valueType != kBinaryFloat32 && valueType != kBinaryFloat64)
     throw IoError(path + ": value type must be 1 (float32) or 2 (float64)");
@@ -147,17 +162,21 @@ Table ReadBinaryTable(const std::string &path) {
   if (dims == 1) {
     table.y = LinearAxis("", 0.0, 1.0, 1);
   }
+  if (threeD) {
+    table.z = GetAxis(in, 136);
+    if (table.z.name.empty()) throw IoError(path + ": axis z has no name");
+  }
   constexpr uint32_t kMaxCount = 1u << 16;
   if (width == 0 || height == 0 || width > kMaxCount || height > kMaxCount ||
       static_cast<uint32_t>(table.x.count) != width ||
-      static_cast<uint32_t>(table.y.count) != height || (dims == 1 && height != 1))
+      static_cast<uint32_t>(table.y.count) != height || (dims == 1 && height != 1) ||
+      (threeD && (table.z.count < 1 || table.z.count > static_cast<int>(kMaxCount))))
     throw IoError(path + ": texel counts disagree with the axes or exceed 65536");
-  const size_t metadataLength = GetU32(in, 136);
-  if (dataOffset % 8 != 0 || dataOffset > in.size() ||
-      kFixedHeaderBytes + metadataLength > dataOffset)
+  const size_t metadataLength = GetU32(in, fixed - 4);
+  if (dataOffset % 8 != 0 || dataOffset > in.size() || fixed + metadataLength > dataOffset)
     throw IoError(path + ": bad data offset or metadata length");
   // Listed axes: their node values follow the metadata, x's first.
-  size_t nodesAt = kFixedHeaderBytes + metadataLength;
+  size_t nodesAt = fixed + metadataLength;
   const auto readAxis = [&](Axis *axis, size_t headerAt, const char *which) {
     const uint32_t mapping = GetMapping(in, headerAt);
     if (mapping == 0) {
@@ -179,15 +198,16 @@ Table ReadBinaryTable(const std::string &path) {
     *axis = ListedAxis(axis->name, std::move(nodes));
   };
   readAxis(&table.x, 40, "x");
-  if (dims == 2) readAxis(&table.y, 88, "y");
-  std::istringstream lines(in.substr(kFixedHeaderBytes, metadataLength));
+  if (dims >= 2) readAxis(&table.y, 88, "y");
+  if (threeD) readAxis(&table.z, 136, "z");
+  std::istringstream lines(in.substr(fixed, metadataLength));
   for (std::string line; std::getline(lines, line);) {
     const size_t eq = line.find('=');
     if (eq != std::string::npos)
       table.metadata.emplace_back(line.substr(0, eq), line.substr(eq + 1));
   }
   if (const std::string *name = table.FindMetadata("table")) table.definition = FindTable(*name);
-  const size_t count = static_cast<size_t>(width) * height * channels;
+  const size_t count = static_cast<size_t>(width) * height * table.z.count * channels;
   const size_t blocks = (flags & 1u) ? 2 : 1;
   if (in.size() != dataOffset + blocks * valueBytes * count)
     throw IoError(path + ": " + std::to_string(in.size()) + " bytes, expected " +

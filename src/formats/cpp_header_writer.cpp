@@ -192,11 +192,16 @@ class CppHeaderWriter final : public TableWriter {
     };
     axisLine("x (width):  ", table.x);
     if (table.is2D()) axisLine("y (height): ", table.y);
+    const bool threeD = table.is3D();
+    if (threeD) axisLine("z (depth):  ", table.z);
     const HeaderText notes = table.definition->Header(table);
     for (const std::string &note : notes.notes) h << "// " << note << "\n";
-    h << "// Layout: kValues[(y * kWidth + x) * kChannels + c]" << notes.layout;
-    h << "// Lookups interpolate bilinearly between texel centres, clamp at the edges,\n"
-         "// and return a texel's value exactly at its centre.\n";
+    h << (threeD ? "// Layout: kValues[((z * kHeight + y) * kWidth + x) * kChannels + c]"
+                 : "// Layout: kValues[(y * kWidth + x) * kChannels + c]")
+      << notes.layout;
+    h << (threeD ? "// Lookups interpolate trilinearly between texel centres, clamp at the edges,\n"
+                 : "// Lookups interpolate bilinearly between texel centres, clamp at the edges,\n")
+      << "// and return a texel's value exactly at its centre.\n";
     h << "// kErrorMax bounds |value - truth| for every value as stored here, the\n"
          "// rounding to "
       << (half ? "half" : "float32") << " included.\n";
@@ -210,6 +215,7 @@ class CppHeaderWriter final : public TableWriter {
     h << "namespace " << name << "_table {\n\n";
     h << "inline constexpr std::size_t kWidth = " << table.width() << ";\n";
     h << "inline constexpr std::size_t kHeight = " << table.height() << ";\n";
+    if (threeD) h << "inline constexpr std::size_t kDepth = " << table.depth() << ";\n";
     h << "inline constexpr std::size_t kChannels = " << table.channels << ";\n";
     // The conventions as constants, for an engine to static_assert on
     // (std::string_view comparisons are constexpr from C++17).
@@ -228,6 +234,7 @@ class CppHeaderWriter final : public TableWriter {
     };
     axisNames("X", table.x);
     if (table.is2D()) axisNames("Y", table.y);
+    if (threeD) axisNames("Z", table.z);
     for (const std::string &constant : notes.constants) h << constant << "\n";
     h << "// Texel i of an axis of n texels holds the value at u = (i + kTexelCentre) / n.\n";
     h << "inline constexpr double kTexelCentre = 0.5;\n";
@@ -251,11 +258,14 @@ class CppHeaderWriter final : public TableWriter {
     };
     axisConstants("X", table.x);
     if (table.is2D()) axisConstants("Y", table.y);
+    if (threeD) axisConstants("Z", table.z);
+    const std::string size =
+        threeD ? "kWidth * kHeight * kDepth * kChannels" : "kWidth * kHeight * kChannels";
     h << "inline constexpr double kErrorMax = "
       << DoubleLiteral(SummarizeStoredBounds(table, storage).max) << ";\n";
     if (half) {
       h << "inline constexpr double kStorageErrorMax = " << DoubleLiteral(storageError) << ";\n";
-      h << "inline constexpr std::uint16_t kValues[kWidth * kHeight * kChannels] = {";
+      h << "inline constexpr std::uint16_t kValues[" << size << "] = {";
       for (size_t i = 0; i < table.values.size(); ++i) {
         char bits[16];
         std::snprintf(
@@ -264,18 +274,19 @@ class CppHeaderWriter final : public TableWriter {
         h << (i % 10 == 0 ? "\n    " : " ") << bits << (i + 1 < table.values.size() ? "," : "");
       }
     } else {
-      h << "inline constexpr float kValues[kWidth * kHeight * kChannels] = {";
+      h << "inline constexpr float kValues[" << size << "] = {";
       for (size_t i = 0; i < table.values.size(); ++i) {
         h << (i % 6 == 0 ? "\n    " : " ") << FloatLiteral(table.values[i])
           << (i + 1 < table.values.size() ? "," : "");
       }
     }
     h << "};\n";
-    h << "static_assert(sizeof(kValues) / sizeof(kValues[0]) == kWidth * kHeight * kChannels,\n"
-         "              \"table size\");\n\n";
+    h << "static_assert(sizeof(kValues) / sizeof(kValues[0]) == " << size << ",\n"
+      << "              \"table size\");\n\n";
     h << kCoordinateHelper << "\n";
     if (half) h << kHalfHelper << "\n";
-    if (table.x.listed() || (table.is2D() && table.y.listed())) h << kNodeHelper << "\n";
+    if (table.x.listed() || (table.is2D() && table.y.listed()) || (threeD && table.z.listed()))
+      h << kNodeHelper << "\n";
     // One generic sampler per channel count.
     h << "inline double Texel(std::size_t x, std::size_t y, std::size_t c) {\n"
          "  return static_cast<double>("
@@ -288,10 +299,22 @@ class CppHeaderWriter final : public TableWriter {
          "  const std::size_t y1 = kHeight > 1 ? y0 + 1 : y0;\n"
          "  return (1.0 - wy) * ((1.0 - wx) * Texel(x0, y0, c) + wx * Texel(x1, y0, c)) +\n"
          "         wy * ((1.0 - wx) * Texel(x0, y1, c) + wx * Texel(x1, y1, c));\n}\n\n";
+    if (threeD) {
+      // Slice z of a 3D table is a 2D table at offset z * kWidth * kHeight.
+      h << "inline double Texel3(std::size_t x, std::size_t y, std::size_t z, std::size_t c) {\n"
+           "  return Texel(x, z * kHeight + y, c);\n}\n\n";
+      h << "inline double Sample3(std::size_t x0, double wx, std::size_t y0, double wy, "
+           "std::size_t z0,\n"
+           "                       double wz, std::size_t c) {\n"
+           "  const std::size_t z1 = kDepth > 1 ? z0 + 1 : z0;\n"
+           "  return (1.0 - wz) * Sample(x0, wx, z0 * kHeight + y0, wy, c) +\n"
+           "         wz * Sample(x0, wx, z1 * kHeight + y0, wy, c);\n}\n\n";
+    }
     h << "}  // namespace " << name << "_table\n\n";
 
     const std::string px = table.x.name;
     const std::string py = table.is2D() ? table.y.name : "";
+    const std::string pz = threeD ? table.z.name : "";
     const std::string t = name + "_table::";
     std::string signature, body;
     body = "  std::size_t x0 = 0, y0 = 0;\n  double wx = 0.0, wy = 0.0;\n";
@@ -306,7 +329,22 @@ class CppHeaderWriter final : public TableWriter {
     body += coordinate(table.x, px, "X", "kWidth", "&x0, &wx");
     if (table.is2D()) body += coordinate(table.y, py, "Y", "kHeight", "&y0, &wy");
     h << "// " << notes.lookupComment << "\n";
-    if (table.channels == 2) {
+    if (threeD) {
+      body += "  std::size_t z0 = 0;\n  double wz = 0.0;\n" +
+              coordinate(table.z, pz, "Z", "kDepth", "&z0, &wz");
+      const auto sample = [&](int c) {
+        return "static_cast<float>(" + t + "Sample3(x0, wx, y0, wy, z0, wz, " + std::to_string(c) +
+               "))";
+      };
+      if (table.channels == 2)
+        h << "inline std::array<float, 2> lookup_" << name << "(float " << px << ", float " << py
+          << ", float " << pz << ") {\n"
+          << body << "  return {" << sample(0) << ",\n          " << sample(1) << "};\n}\n\n";
+      else
+        h << "inline float lookup_" << name << "(float " << px << ", float " << py << ", float "
+          << pz << ") {\n"
+          << body << "  return " << sample(0) << ";\n}\n\n";
+    } else if (table.channels == 2) {
       h << "inline std::array<float, 2> lookup_" << name << "(float " << px << ", float " << py
         << ") {\n"
         << body << "  return {static_cast<float>(" << t << "Sample(x0, wx, y0, wy, 0)),\n"

@@ -1,9 +1,10 @@
 // EXR output through OpenEXR: 32-bit float channels, y = 0 the first
-// scanline (INCREASING_Y), channel Y for single-channel tables and R = A,
-// G = B for dfg; every metadata pair becomes a string attribute, and the
-// error summary also numeric (errorMax, errorRms as double attributes).
-// The error summary is that of the stored float32 values (storage.h).
-// OpenEXR itself stamps no date, so equal tables give equal files.
+// scanline (INCREASING_Y; a 3D table's slices of constant z follow one
+// another down the image, each height rows, as attribute axisZ says), channel Y for single-channel
+// tables and R = A, G = B for dfg; every metadata pair becomes a string attribute, and the error
+// summary also numeric (errorMax, errorRms as double attributes). The error summary is that of the
+// stored float32 values (storage.h). OpenEXR itself stamps no date, so equal tables give equal
+// files.
 #include <ImfChannelList.h>
 #include <ImfDoubleAttribute.h>
 #include <ImfFrameBuffer.h>
@@ -22,7 +23,9 @@ class ExrWriter final : public TableWriter {
   const char *formatName() const override { return "exr"; }
   const char *extension() const override { return ".exr"; }
   void Write(const Table &table, const std::string &path, const WriteOptions &) const override {
-    const int width = table.width(), height = table.height(), channels = table.channels;
+    // A 3D table's slices are stacked along the image's y (slice 0 on top).
+    const int width = table.width(), height = table.height() * table.depth();
+    const int channels = table.channels;
     std::vector<float> pixels(table.values.size());
     for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = static_cast<float>(table.values[i]);
     try {

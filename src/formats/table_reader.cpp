@@ -55,10 +55,18 @@ Table ReadExrTable(const std::string &path) {
     } else if (!axisYParsed) {
       throw IoError(path + ": attribute axisY missing or malformed for a 2D image");
     }
-    if (table.x.count != width || table.y.count != height)
+    // A 3D table: axisZ names the third axis, whose slices are stacked
+    // along the image's y.
+    if (const std::string *axisZ = table.FindMetadata("axisZ")) {
+      if (!ParseAxisDescription(*axisZ, &table.z) || table.z.name.empty())
+        throw IoError(path + ": attribute axisZ malformed");
+      if (!axisYParsed) throw IoError(path + ": attribute axisZ without axisY");
+    }
+    if (table.x.count != width || static_cast<long>(table.y.count) * table.z.count != height)
       throw IoError(path + ": image is " + std::to_string(width) + " x " + std::to_string(height) +
                     " but the axes say " + std::to_string(table.x.count) + " x " +
-                    std::to_string(table.y.count));
+                    std::to_string(table.y.count) +
+                    (table.is3D() ? " x " + std::to_string(table.z.count) : std::string()));
     // "T", or "T.err" for an error map (ErrorMapOf).
     const std::string *name = table.FindMetadata("table");
     if (name) {
@@ -126,6 +134,11 @@ HeaderValues ReadHeaderValues(const std::string &path) {
   if (width < 1 || height < 1 || channels < 1 || width > (1 << 16) || height > (1 << 16) ||
       channels > 2)
     throw IoError(path + ": kWidth, kHeight or kChannels missing or out of range");
+  // kDepth: a 3D table's slice count (absent: 1).
+  const long depth =
+      text.find("kDepth = ") == std::string::npos ? 1 : ConstantAfter(text, "kDepth");
+  if (depth < 1 || depth > (1 << 16)) throw IoError(path + ": kDepth out of range");
+  out.depth = static_cast<int>(depth);
   out.width = static_cast<int>(width);
   out.height = static_cast<int>(height);
   out.channels = static_cast<int>(channels);
@@ -142,7 +155,7 @@ HeaderValues ReadHeaderValues(const std::string &path) {
   const size_t open = text.find('{', start), close = text.find("};", start);
   if (open == std::string::npos || close == std::string::npos || close < open)
     throw IoError(path + ": kValues has no initialiser");
-  const size_t expected = static_cast<size_t>(width) * height * channels;
+  const size_t expected = static_cast<size_t>(width) * height * depth * channels;
   out.values.reserve(expected);
   const char *p = text.c_str() + open + 1;
   const char *last = text.c_str() + close;

@@ -65,52 +65,76 @@ void DefaultAxes(const TableDefinition &table, const BakeSettings &s, Axis *x, A
   table.Axes(s, s.SizeFor(table.Name(), table.DefaultSize()), x, y);
 }
 
+void DefaultAxes(const TableDefinition &table, const BakeSettings &s, Axis *x, Axis *y, Axis *z) {
+  DefaultAxes(table, s, x, y);
+  table.DepthAxis(s, s.depthSize > 0 ? s.depthSize : table.DefaultDepth(), z);
+}
+
+PointValue EvaluateTexel(const TableDefinition &definition, const BakeSettings &s,
+                         const Table &table, int ix, int iy, int iz) {
+  const double x = table.x.TexelCenter(ix), y = table.y.TexelCenter(iy);
+  return table.is3D() ? definition.Evaluate3D(s, x, y, table.z.TexelCenter(iz))
+                      : definition.Evaluate(s, x, y);
+}
+
 Table BakeTable(const TableDefinition &definition, const BakeSettings &s,
                 const ProgressFn &progress, BakeStats *statsOut) {
-  Axis x, y;
-  DefaultAxes(definition, s, &x, &y);
-  return BakeTableOn(definition, s, x, y, progress, statsOut);
+  Axis x, y, z;
+  DefaultAxes(definition, s, &x, &y, &z);
+  return BakeTableOn(definition, s, x, y, z, progress, statsOut);
 }
 
 Table BakeTableOn(const TableDefinition &definition, const BakeSettings &s, const Axis &x,
                   const Axis &y, const ProgressFn &progress, BakeStats *statsOut) {
+  Axis z;
+  definition.DepthAxis(s, s.depthSize > 0 ? s.depthSize : definition.DefaultDepth(), &z);
+  return BakeTableOn(definition, s, x, y, z, progress, statsOut);
+}
+
+Table BakeTableOn(const TableDefinition &definition, const BakeSettings &s, const Axis &x,
+                  const Axis &y, const Axis &z, const ProgressFn &progress, BakeStats *statsOut) {
   const auto start = std::chrono::steady_clock::now();
   Table table;
   table.definition = &definition;
   table.x = x;
   table.y = y;
+  table.z = z;
   table.channels = definition.Channels();
   table.channelNames = definition.ChannelNames();
-  const size_t texels = static_cast<size_t>(table.width()) * table.height();
+  const size_t texels = table.texelCount();
   table.values.assign(texels * table.channels, 0.0);
   table.errors.assign(texels * table.channels, 0.0);
 
   std::vector<uint64_t> texelSamples(texels, 0), texelEvaluations(texels, 0);
   std::vector<uint8_t> texelQuadrature(texels, 0);
   std::atomic<size_t> done{0};
-  tbb::parallel_for(
-      tbb::blocked_range<size_t>(0, texels), [&](const tbb::blocked_range<size_t> &r) {
-        for (size_t k = r.begin(); k != r.end(); ++k) {
-          // Column by column (k runs down each column of constant mu): the
-          // quadrature's azimuthal nodes depend on mu only, and a thread
-          // that stays in a column reuses them. Each texel is computed
-          // alone, so the order changes nothing in the values.
-          const int ix = static_cast<int>(k / table.height());
-          const int iy = static_cast<int>(k % table.height());
-          const size_t t = static_cast<size_t>(iy) * table.width() + ix;
-          const PointValue texel =
-              definition.Evaluate(s, table.x.TexelCenter(ix), table.y.TexelCenter(iy));
-          for (int c = 0; c < table.channels; ++c) {
-            table.values[t * table.channels + c] = texel.value[c];
-            table.errors[t * table.channels + c] = texel.error[c];
-          }
-          texelSamples[t] = texel.samples;
-          texelEvaluations[t] = texel.evaluations;
-          texelQuadrature[t] = texel.quadrature ? 1 : 0;
-        }
-        const size_t now = done.fetch_add(r.size()) + r.size();
-        if (progress) progress(static_cast<double>(now) / static_cast<double>(texels));
-      });
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, texels),
+                    [&](const tbb::blocked_range<size_t> &r) {
+                      for (size_t k = r.begin(); k != r.end(); ++k) {
+                        // Column by column (k runs down each column of constant mu): the
+                        // quadrature's azimuthal nodes depend on mu only, and a thread
+                        // that stays in a column reuses them. Each texel is computed
+                        // alone, so the order changes nothing in the values.
+                        // (A 3D table: slice by slice, each as a 2D table.)
+                        const size_t slice = static_cast<size_t>(table.width()) * table.height();
+                        const int iz = static_cast<int>(k / slice);
+                        const size_t inSlice = k % slice;
+                        const int ix = static_cast<int>(inSlice / table.height());
+                        const int iy = static_cast<int>(inSlice % table.height());
+                        const size_t t = iz * slice + static_cast<size_t>(iy) * table.width() + ix;
+                        const PointValue texel = EvaluateTexel(definition, s, table, ix, iy, iz);
+                        for (int c = 0; c < table.channels; ++c) {
+                          table.values[t * table.channels + c] = texel.value[c];
+                          table.errors[t * table.channels + c] = texel.error[c];
+                        }
+                        texelSamples[t] = texel.samples;
+                        texelEvaluations[t] = texel.evaluations;
+                        texelQuadrature[t] = texel.quadrature ? 1 : 0;
+                      }
+                      const size_t now = done.fetch_add(r.size()) + r.size();
+                      if (progress)
+                        progress(static_cast<double>(now) / static_cast<double>(texels));
+                    });
 
   BakeStats stats;
   for (size_t t = 0; t < texels; ++t) {
@@ -140,11 +164,17 @@ Table BakeTableOn(const TableDefinition &definition, const BakeSettings &s, cons
   for (auto &entry : definition.ModelMetadata(s)) m.push_back(std::move(entry));
   m.emplace_back("axisX", DescribeAxis(table.x));
   m.emplace_back("axisY", table.is2D() ? DescribeAxis(table.y) : "none (1D table)");
+  if (table.is3D()) m.emplace_back("axisZ", DescribeAxis(table.z));
   m.emplace_back("alpha", definition.AlphaMetadata(s));
   std::string convention =
       "texel i of N holds the value at u = (i + 0.5) / N, mapped linearly onto [min, max]; "
       "y = 0 first";
-  if (table.x.listed() || table.y.listed())
+  if (table.is3D())
+    convention +=
+        "; the third axis z is outermost: slices of constant z follow one another (EXR: stacked "
+        "along the image's y, slice z = 0 first), values[((z * height + y) * width + x) * "
+        "channels + c]";
+  if (table.x.listed() || table.y.listed() || table.z.listed())
     convention +=
         "; an axis described as 'values [...]' holds texel i at exactly its i-th value, and "
         "lookups interpolate linearly in that value between neighbouring texels";

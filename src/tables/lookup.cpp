@@ -29,6 +29,24 @@ double Lookup(const Table &table, const std::vector<double> &values, double x, d
          wy * ((1.0 - wx) * at(x0, y1) + wx * at(x1, y1));
 }
 
+double Lookup(const Table &table, const std::vector<double> &values, double x, double y, double z,
+              int c) {
+  int x0, y0, z0;
+  double wx, wy, wz;
+  LookupCoordinate(table.x, x, &x0, &wx);
+  LookupCoordinate(table.y, y, &y0, &wy);
+  LookupCoordinate(table.z, z, &z0, &wz);
+  const int x1 = table.width() > 1 ? x0 + 1 : x0;
+  const int y1 = table.height() > 1 ? y0 + 1 : y0;
+  const int z1 = table.depth() > 1 ? z0 + 1 : z0;
+  const auto slice = [&](int iz) {
+    const auto at = [&](int ix, int iy) { return values[table.index(ix, iy, iz, c)]; };
+    return (1.0 - wy) * ((1.0 - wx) * at(x0, y0) + wx * at(x1, y0)) +
+           wy * ((1.0 - wx) * at(x0, y1) + wx * at(x1, y1));
+  };
+  return (1.0 - wz) * slice(z0) + wz * slice(z1);
+}
+
 double LookupMuAverage(const Table &table, const std::vector<double> &values, double y, int c) {
   // The row at y, interpolated between the two nearest rows.
   int y0;

@@ -40,6 +40,12 @@ namespace lutbake {
 
 inline constexpr char kBinaryMagic[8] = {'L', 'U', 'T', 'B', 'A', 'K', 'E', '\0'};
 inline constexpr uint32_t kBinaryVersion = 1;
+// 3D tables (glass_E(mu, r, eta)): version 2, the same fields with axis z
+// (48 bytes, as the others) at offset 136, so that the metadata length is at
+// 184 and the metadata at 188; dimensions 3; node values of listed axes x,
+// then y, then z; values [z][y][x][channel]. 1D and 2D tables stay
+// version 1, byte for byte.
+inline constexpr uint32_t kBinaryVersion3D = 2;
 inline constexpr uint32_t kBinaryFloat32 = 1;  // value type field
 inline constexpr uint32_t kBinaryFloat64 = 2;
 

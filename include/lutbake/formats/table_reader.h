@@ -23,6 +23,7 @@ Table ReadExrTable(const std::string &path);
 // the metadata repeated in its opening comment ("//   key: value" lines).
 struct HeaderValues {
   int width = 0, height = 0, channels = 0;
+  int depth = 1;      // kDepth of a 3D table's header
   bool half = false;  // half storage: values are the decoded halves
   std::vector<float> values;
   std::vector<std::pair<std::string, std::string>> metadata;

@@ -41,6 +41,9 @@ void FresnelAxes(FresnelModel model, int count, Axis *x, Axis *y);
 // The axes a table has by default (SPEC sections 2 and 3), with the
 // settings' size for it.
 void DefaultAxes(const TableDefinition &table, const BakeSettings &settings, Axis *x, Axis *y);
+// With a 3D table's third axis too (count 1 and no name for the others).
+void DefaultAxes(const TableDefinition &table, const BakeSettings &settings, Axis *x, Axis *y,
+                 Axis *z);
 
 Table BakeTable(const TableDefinition &table, const BakeSettings &settings,
                 const ProgressFn &progress = {}, BakeStats *stats = nullptr);
@@ -48,6 +51,15 @@ Table BakeTable(const TableDefinition &table, const BakeSettings &settings,
 // IORs): x and y as DefaultAxes would give them, in kind and order.
 Table BakeTableOn(const TableDefinition &table, const BakeSettings &settings, const Axis &x,
                   const Axis &y, const ProgressFn &progress = {}, BakeStats *stats = nullptr);
+// With the third axis given too (a 3D table; a listed eta axis).
+Table BakeTableOn(const TableDefinition &table, const BakeSettings &settings, const Axis &x,
+                  const Axis &y, const Axis &z, const ProgressFn &progress = {},
+                  BakeStats *stats = nullptr);
+
+// The value of a table's texel (ix, iy, iz) on its axes, with the settings'
+// estimator: Evaluate at the texel centres, or Evaluate3D for a 3D table.
+PointValue EvaluateTexel(const TableDefinition &definition, const BakeSettings &settings,
+                         const Table &table, int ix, int iy, int iz);
 
 // E (channel 0) of table E, or the split sum (A, B) of table dfg, at (mu_o,
 // alpha), with the settings' estimator (a tolerance run when

@@ -21,6 +21,11 @@ inline double Lookup(const Table &table, double x, double y, int c = 0) {
   return Lookup(table, table.values, x, y, c);
 }
 
+// Trilinear lookup of channel c at (x, y, z) in a 3D table (the same
+// texel-centre rule on each axis; listed axes interpolate in their values).
+double Lookup(const Table &table, const std::vector<double> &values, double x, double y, double z,
+              int c);
+
 // 2 integral_0^1 L(mu, y) mu dmu for the lookup L of channel c of a table
 // whose x axis is mu on [0, 1]: exact, because L is piecewise linear in mu
 // (constant outside the first and last centre).

@@ -107,6 +107,9 @@ struct BakeSettings {
   // else (0) the table's own default (TableDefinition::DefaultSize).
   int size = 0;
   std::map<std::string, int> tableSizes;
+  // Texels of a 3D table's third axis (eta): 0 for the table's own default
+  // (TableDefinition::DefaultDepth).
+  int depthSize = 0;
   // Fixed runs: samples per texel. Tolerance runs: the first round.
   uint64_t samples = kDefaultSamples;
   uint64_t seed = 0;

@@ -5,6 +5,11 @@
 // value at u = (x + 0.5) / N, mapped linearly onto [min, max]. Values are
 // stored row-major, y (the second axis) outer, x inner, channels interleaved:
 //   values[(y * width + x) * channels + c].
+// A 3D table (glass_E(mu, r, eta)) adds a third axis z outermost: its slices
+// of constant z follow one another,
+//   values[((z * height + y) * width + x) * channels + c],
+// which is also how the files store it (EXR: the slices stacked along the
+// image's y, slice z = 0 on top; .bin version 2; headers: kDepth).
 #pragma once
 
 #include <cstdint>
@@ -60,6 +65,8 @@ struct Table {
   Axis x;  // width: the first axis (mu, or the Fresnel parameter)
   Axis y;  // height: perceptual roughness, or the second Fresnel axis;
            // a 1D table has y.count = 1 and y.name empty
+  Axis z = LinearAxis("", 0.0, 1.0, 1);  // depth: a 3D table's third axis
+                                         // (eta); otherwise count 1, name empty
   int channels = 1;
   std::vector<std::string> channelNames;  // EXR channel names: {"Y"} or {"R", "G"}
   std::vector<double> values;             // see the layout above
@@ -73,9 +80,16 @@ struct Table {
   std::string DefinitionName() const;
   int width() const { return x.count; }
   int height() const { return y.count; }
+  int depth() const { return z.count; }
   bool is2D() const { return !y.name.empty(); }
+  bool is3D() const { return !z.name.empty(); }
+  // Texels in all: width x height x depth.
+  size_t texelCount() const { return static_cast<size_t>(x.count) * y.count * z.count; }
   size_t index(int ix, int iy, int c) const {
     return (static_cast<size_t>(iy) * x.count + ix) * channels + c;
+  }
+  size_t index(int ix, int iy, int iz, int c) const {
+    return ((static_cast<size_t>(iz) * y.count + iy) * x.count + ix) * channels + c;
   }
   double value(int ix, int iy, int c = 0) const { return values[index(ix, iy, c)]; }
 

@@ -142,7 +142,15 @@ class TableDefinition {
   // The default axes with `size` texels on each (a 1D table: y.count = 1,
   // y.name empty).
   virtual void Axes(const BakeSettings &settings, int size, Axis *x, Axis *y) const = 0;
-  // The point coordinates: x, then y for a 2D table, as eval takes them.
+  // A 3D table's third axis (z, outermost in the files) with `size` texels,
+  // and its default size; the default leaves *z as it is for 1D and 2D
+  // tables (count 1, no name).
+  virtual int DefaultDepth() const { return 1; }
+  virtual void DepthAxis(const BakeSettings &, int /*size*/, Axis *z) const {
+    *z = LinearAxis("", 0.0, 1.0, 1);
+  }
+  // The point coordinates: x, then y for a 2D table, then z for a 3D one,
+  // as eval takes them.
   virtual std::vector<PointCoordinate> Coordinates(const BakeSettings &settings) const = 0;
   // Every eval option any variant of the table takes (Favg: f0, eta, k).
   virtual std::vector<std::string> CoordinateOptions() const;
@@ -178,6 +186,12 @@ class TableDefinition {
   // with the settings' estimator. Throws std::domain_error outside the
   // accepted coordinates.
   virtual PointValue Evaluate(const BakeSettings &settings, double x, double y) const = 0;
+  // The same at (x, y, z) for a 3D table; the default (1D and 2D tables)
+  // ignores z.
+  virtual PointValue Evaluate3D(const BakeSettings &settings, double x, double y,
+                                double /*z*/) const {
+    return Evaluate(settings, x, y);
+  }
   // Samples per texel of a fixed-sample bake (0: deterministic).
   virtual uint64_t SamplesPerTexel(const BakeSettings &settings) const;
   // The metadata words for the deterministic integrators: the estimator
