@@ -65,6 +65,10 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
                  "Texels per axis for every table (default: 32 for E, Eavg, Favg; 128 for dfg)")
       ->type_name("N")
       ->check(InRange(1, kMaxSize, "texels per axis"));
+  app.add_option("--eta-size", o.etaSize,
+                 "Texels of the eta axis of the 3D tables (their own default otherwise)")
+      ->type_name("N")
+      ->check(InRange(1, kMaxSize, "texels of the eta axis"));
   AddSamplingOptions(app, o.sampling, "texel");
   app.add_flag("--error-map", o.errorMap,
                "Also write T.err.exr: the per-texel bound of T.exr's float32 values (their "
@@ -114,6 +118,7 @@ struct BakeJob {
   Axis x, y;
   std::string name;
   std::vector<std::pair<std::string, std::string>> metadata;
+  Axis z = LinearAxis("", 0.0, 1.0, 1);  // a 3D table's third axis
 };
 
 // Options that choose models, which a plan decides instead. (--tables is
@@ -139,6 +144,7 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
   ParseSheenVisibility(o.sheenVisibility, &settings.sheenVisibility);
   ParseSheenAlpha(o.sheenAlpha, &settings.sheenAlpha);
   if (o.size > 0) settings.size = o.size;
+  if (o.etaSize > 0) settings.depthSize = o.etaSize;
   if (const int status = ApplySamplingOptions("bake", o.sampling, &settings)) return status;
   const bool tolerance = settings.tolerance > 0.0;
   settings.commandLine = commandLine;
@@ -211,6 +217,9 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
     planMetadata.emplace_back("planSources", sources);
     for (const PlannedTable &t : plan.tables) {
       BakeJob job{t.definition, PlannedSettings(t, settings), t.x, t.y, t.name, planMetadata};
+      t.definition->DepthAxis(
+          job.settings, settings.depthSize > 0 ? settings.depthSize : t.definition->DefaultDepth(),
+          &job.z);
       job.metadata.emplace_back("planMaterials", JoinNames(t.materials));
       jobs.push_back(job);
     }
@@ -218,8 +227,20 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
   } else {
     for (const std::string &name : SplitList(o.tables)) {
       BakeJob job{&TableNamed(name), settings, {}, {}, name, {}};
-      DefaultAxes(*job.table, settings, &job.x, &job.y);
+      DefaultAxes(*job.table, settings, &job.x, &job.y, &job.z);
       jobs.push_back(job);
+    }
+  }
+  // A 3D table of --size N and --eta-size M has N^2 M texels: at most
+  // kMaxSize^2 in all, as the largest 2D table (values and bounds in double
+  // take 32 bytes a texel and channel).
+  for (const BakeJob &job : jobs) {
+    const double texels = static_cast<double>(job.x.count) * job.y.count * job.z.count;
+    if (texels > static_cast<double>(kMaxSize) * kMaxSize) {
+      std::cerr << "lutbake bake: " << job.name << " would have " << job.x.count << " x "
+                << job.y.count << " x " << job.z.count << " texels; accepted: at most " << kMaxSize
+                << " x " << kMaxSize << " in all (lower --size or --eta-size)\n";
+      return 2;
     }
   }
   // An estimator a table has no sampler for is a usage error, before any work.
@@ -257,7 +278,7 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
     std::vector<std::string> unreached;
     for (const BakeJob &job : jobs) {
       BakeStats stats;
-      Table table = BakeTableOn(*job.table, job.settings, job.x, job.y, {}, &stats);
+      Table table = BakeTableOn(*job.table, job.settings, job.x, job.y, job.z, {}, &stats);
       if (job.name != job.table->Name()) table.name = job.name;
       table.metadata.insert(table.metadata.end(), job.metadata.begin(), job.metadata.end());
       nlohmann::ordered_json files = nlohmann::ordered_json::array();
@@ -272,18 +293,20 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
         MakeExrWriter()->Write(ErrorMapOf(table), output.Add(path), writeOptions);
         files.push_back(path);
       }
-      const size_t texels = static_cast<size_t>(table.width()) * table.height();
+      const size_t texels = table.texelCount();
       const double meanSamples = static_cast<double>(stats.samples) / static_cast<double>(texels);
       // The bound as the float32 files state it (rounding included).
       const BoundSummary stored = SummarizeStoredBounds(table, ValueType::kFloat32);
       char line[320];
-      std::snprintf(line, sizeof line,
-                    "%-5s %4d x %-4d samples/texel mean %-9.4g max %-9llu quadrature texels %-6llu"
-                    " %7.3f s  error max %.2e  rms %.2e (float32 as stored; integration %.1e)\n",
-                    job.name.c_str(), table.width(), table.height(), meanSamples,
-                    static_cast<unsigned long long>(stats.maxTexelSamples),
-                    static_cast<unsigned long long>(stats.quadratureTexels), stats.seconds,
-                    stored.max, stored.rms, table.MaxError());
+      const std::string depth = table.is3D() ? " x " + std::to_string(table.depth()) : "";
+      std::snprintf(
+          line, sizeof line,
+          "%-5s %4d x %-4d%s samples/texel mean %-9.4g max %-9llu quadrature texels %-6llu"
+          " %7.3f s  error max %.2e  rms %.2e (float32 as stored; integration %.1e)\n",
+          job.name.c_str(), table.width(), table.height(), depth.c_str(), meanSamples,
+          static_cast<unsigned long long>(stats.maxTexelSamples),
+          static_cast<unsigned long long>(stats.quadratureTexels), stats.seconds, stored.max,
+          stored.rms, table.MaxError());
       std::cerr << line;
       if (stats.unconverged > 0)
         unreached.push_back(job.name + " (" + std::to_string(stats.unconverged) + " texels)");
@@ -291,6 +314,7 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
       entry["name"] = job.name;
       entry["width"] = table.width();
       entry["height"] = table.height();
+      if (table.is3D()) entry["depth"] = table.depth();
       entry["channels"] = table.channels;
       entry["estimator"] = *table.FindMetadata("estimator");
       entry["samples"] = stats.samples;

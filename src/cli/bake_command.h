@@ -19,7 +19,8 @@ struct BakeOptions {
   std::string fresnel = "schlick";
   std::string sheenVisibility = "charlie";
   std::string sheenAlpha = "linear";
-  int size = 0;  // 0: the per-table defaults
+  int size = 0;     // 0: the per-table defaults
+  int etaSize = 0;  // texels of a 3D table's eta axis; 0: its default
   SamplingOptions sampling;
   bool errorMap = false;
   int threads = 0;  // 0: all cores

@@ -63,7 +63,8 @@ std::vector<double> Reals(const std::string &list) {
 
 // One point of the evaluation: its coordinates as the user gave them.
 struct Point {
-  double x = 0, y = 0;  // the table's axis values: (mu, r) for E, (r, 0) for Eavg, ...
+  double x = 0, y = 0, z = 0;  // the table's axis values: (mu, r) for E, (r, 0) for Eavg,
+                               // (mu, r, eta) for a 3D table
   PointValue result;
 };
 
@@ -196,25 +197,31 @@ int RunEval(const EvalOptions &o, CLI::App &app) {
   if (const std::string problem = table.EstimatorProblem(settings.estimator); !problem.empty())
     return complain("--estimator " + std::string(ToString(settings.estimator)) + ": " + problem);
 
-  // Row-major, as a table stores them: y outer, x inner.
+  // Row-major, as a table stores them: z outer, then y, x inner.
   const std::vector<double> &xs = values[0];
   const std::vector<double> ys = values.size() > 1 ? values[1] : std::vector<double>{0.0};
-  if (xs.size() * ys.size() > kMaxPoints) {
+  const std::vector<double> zs = values.size() > 2 ? values[2] : std::vector<double>{0.0};
+  const double count = static_cast<double>(xs.size()) * ys.size() * zs.size();
+  if (count > kMaxPoints) {
     std::string options;
     for (const PointCoordinate &c : coordinates)
       options += (options.empty() ? "--" : " x --") + c.option;
-    return complain(std::to_string(xs.size() * ys.size()) + " points (" + options +
-                    "); accepted: at most " + std::to_string(kMaxPoints));
+    return complain(FormatDouble(count) + " points (" + options + "); accepted: at most " +
+                    std::to_string(kMaxPoints));
   }
   std::vector<Point> points;
-  for (double y : ys)
-    for (double x : xs) points.push_back({x, y, {}});
+  for (double z : zs)
+    for (double y : ys)
+      for (double x : xs) points.push_back({x, y, z, {}});
+  const bool threeD = coordinates.size() > 2;
 
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
                                   static_cast<size_t>(ThreadCount(o.threads)));
   try {
     tbb::parallel_for(size_t{0}, points.size(), [&](size_t i) {
-      points[i].result = table.Evaluate(settings, points[i].x, points[i].y);
+      const Point &p = points[i];
+      points[i].result =
+          threeD ? table.Evaluate3D(settings, p.x, p.y, p.z) : table.Evaluate(settings, p.x, p.y);
     });
   } catch (const std::domain_error &e) {
     return complain(std::string(e.what()) + " (--table " + name + ")");
@@ -223,7 +230,7 @@ int RunEval(const EvalOptions &o, CLI::App &app) {
   const std::vector<std::string> meanings = table.ChannelMeanings();
   const int channels = table.Channels();
   for (const Point &p : points) {
-    const double coordinate[2] = {p.x, p.y};
+    const double coordinate[3] = {p.x, p.y, p.z};
     if (o.json) {
       nlohmann::ordered_json line;
       line["table"] = o.table;

@@ -69,13 +69,36 @@ bool BinIsFloat64(const Table &bin) {
 }
 
 // Coordinates of a point for the report, named by the table's axes.
-std::vector<std::pair<std::string, double>> At(const Table &t, double x, double y) {
+std::vector<std::pair<std::string, double>> At(const Table &t, double x, double y, double z = 0.0) {
   const auto name = [](const std::string &axis) {
     return axis == "perceptualRoughness" ? std::string("roughness") : axis;
   };
   std::vector<std::pair<std::string, double>> at{{name(t.x.name), x}};
   if (t.is2D()) at.emplace_back(name(t.y.name), y);
+  if (t.is3D()) at.emplace_back(name(t.z.name), z);
   return at;
+}
+
+// The texel indices of flat texel number `texel` (x inner, then y, then z).
+struct TexelIndex {
+  int x, y, z;
+};
+TexelIndex IndexOf(const Table &t, size_t texel) {
+  const size_t slice = static_cast<size_t>(t.width()) * t.height();
+  return {static_cast<int>(texel % t.width()), static_cast<int>((texel % slice) / t.width()),
+          static_cast<int>(texel / slice)};
+}
+
+// Where a texel's centre is, named by the table's axes.
+std::vector<std::pair<std::string, double>> AtTexel(const Table &t, size_t texel) {
+  const TexelIndex i = IndexOf(t, texel);
+  return At(t, t.x.TexelCenter(i.x), t.y.TexelCenter(i.y), t.z.TexelCenter(i.z));
+}
+
+// The engine's lookup (bilinear, trilinear for a 3D table) of channel c.
+double LookupAt(const Table &t, const std::vector<double> &values, double x, double y, double z,
+                int c) {
+  return t.is3D() ? Lookup(t, values, x, y, z, c) : Lookup(t, values, x, y, c);
 }
 
 std::string Where(const std::vector<std::pair<std::string, double>> &at) {
@@ -195,7 +218,10 @@ class Checker {
       const std::string *ax = t.table.FindMetadata("axisX"), *ay = t.table.FindMetadata("axisY");
       bool ok = ax && ParseAxisDescription(*ax, &t.table.x);
       if (ay && !ParseAxisDescription(*ay, &t.table.y)) t.table.y = LinearAxis("", 0.0, 1.0, 1);
-      ok = ok && t.table.x.count == header->width && t.table.y.count == header->height;
+      if (const std::string *az = t.table.FindMetadata("axisZ"))
+        ok = ok && ParseAxisDescription(*az, &t.table.z) && !t.table.z.name.empty();
+      ok = ok && t.table.x.count == header->width && t.table.y.count == header->height &&
+           t.table.z.count == header->depth;
       if (!ok) {
         Add(name, "metadata", CheckStatus::kFail,
             hPath + ": its comment lacks axisX / axisY matching kWidth and kHeight");
@@ -273,8 +299,9 @@ class Checker {
     const std::string model = t.def->DescribeModel(t.model);
     Add(name, "metadata", CheckStatus::kPass,
         t.primary + ": " + std::to_string(table.width()) + " x " + std::to_string(table.height()) +
-            ", " + model + ", " + DescribeAxis(table.x) +
-            (table.is2D() ? " x " + DescribeAxis(table.y) : "") + ", errorMax " +
+            (table.is3D() ? " x " + std::to_string(table.depth()) : "") + ", " + model + ", " +
+            DescribeAxis(table.x) + (table.is2D() ? " x " + DescribeAxis(table.y) : "") +
+            (table.is3D() ? " x " + DescribeAxis(table.z) : "") + ", errorMax " +
             Short(t.statedErrorMax));
     return true;
   }
@@ -298,18 +325,20 @@ class Checker {
                 static_cast<float>(half ? RoundToHalf(t.table.values[i]) : t.table.values[i]) &&
             !(std::isnan(a[i]) && std::isnan(t.table.values[i]))) {
           const int c = static_cast<int>(i % t.table.channels);
-          const size_t texel = i / t.table.channels;
-          problems.push_back(
-              what + " differs at texel (" + std::to_string(texel % t.table.width()) + ", " +
-              std::to_string(texel / t.table.width()) + ") channel " + std::to_string(c) + ": " +
-              FormatDouble(a[i]) + " against " + FormatDouble(t.table.values[i]));
+          const TexelIndex at = IndexOf(t.table, i / t.table.channels);
+          problems.push_back(what + " differs at texel (" + std::to_string(at.x) + ", " +
+                             std::to_string(at.y) +
+                             (t.table.is3D() ? ", " + std::to_string(at.z) : std::string()) +
+                             ") channel " + std::to_string(c) + ": " + FormatDouble(a[i]) +
+                             " against " + FormatDouble(t.table.values[i]));
           return;
         }
       compared.push_back(what);
     };
     const auto sameAxes = [&](const Table &other, const std::string &what) {
       if (DescribeAxis(other.x) != DescribeAxis(t.table.x) ||
-          (t.table.is2D() && DescribeAxis(other.y) != DescribeAxis(t.table.y)))
+          (t.table.is2D() && DescribeAxis(other.y) != DescribeAxis(t.table.y)) ||
+          DescribeAxis(other.z) != DescribeAxis(t.table.z))
         problems.push_back(what + " has other axes than " + t.primary);
     };
     if (bin && exr) {
@@ -383,8 +412,9 @@ class Checker {
   }
 
   // The value (up to 2 channels) at a point of a table's axes.
-  PointValue Reference(const Loaded &t, double x, double y) const {
-    return t.def->Evaluate(ReferenceSettings(t), x, y);
+  PointValue Reference(const Loaded &t, double x, double y, double z) const {
+    return t.table.is3D() ? t.def->Evaluate3D(ReferenceSettings(t), x, y, z)
+                          : t.def->Evaluate(ReferenceSettings(t), x, y);
   }
 
   // Every texel of every usable table, and the random points, in one
@@ -393,7 +423,7 @@ class Checker {
     struct Task {
       Loaded *t;
       size_t texel;  // texel index, or SIZE_MAX for a random point
-      double x, y;
+      double x, y, z;
       PointValue *out;
       // The panel rule at 1e-10 rather than the reference: the furnace
       // grid's headline numbers, which judge nothing (see CheckAlbedoScaling).
@@ -403,14 +433,15 @@ class Checker {
     for (auto &[kind, t] : tables_) {
       if (!t.usable) continue;
       const TableDefinition &def = *t.def;
-      const size_t texels = static_cast<size_t>(t.table.width()) * t.table.height();
+      const size_t texels = t.table.texelCount();
       t.ref.assign(texels * t.table.channels, 0.0);
       t.refError.assign(texels * t.table.channels, 0.0);
       refTexel_[kind].resize(texels);
-      for (size_t i = 0; i < texels; ++i)
-        tasks.push_back({&t, i, t.table.x.TexelCenter(static_cast<int>(i % t.table.width())),
-                         t.table.y.TexelCenter(static_cast<int>(i / t.table.width())),
-                         &refTexel_[kind][i]});
+      for (size_t i = 0; i < texels; ++i) {
+        const TexelIndex at = IndexOf(t.table, i);
+        tasks.push_back({&t, i, t.table.x.TexelCenter(at.x), t.table.y.TexelCenter(at.y),
+                         t.table.z.TexelCenter(at.z), &refTexel_[kind][i]});
+      }
       // Random points over the whole axis ranges, edges (where lookups clamp) included.
       RandomStream random(HashValues({options_.seed, def.SeedId()}));
       points_[kind].resize(static_cast<size_t>(options_.randomPoints));
@@ -418,7 +449,9 @@ class Checker {
         p.x = t.table.x.min + (t.table.x.max - t.table.x.min) * random.NextDouble();
         p.y = t.table.is2D() ? t.table.y.min + (t.table.y.max - t.table.y.min) * random.NextDouble()
                              : 0.0;
-        tasks.push_back({&t, SIZE_MAX, p.x, p.y, &p.truth});
+        p.z = t.table.is3D() ? t.table.z.min + (t.table.z.max - t.table.z.min) * random.NextDouble()
+                             : 0.0;
+        tasks.push_back({&t, SIZE_MAX, p.x, p.y, p.z, &p.truth});
       }
       // The albedo-scaling furnace's grid: cell centres of a g x g grid
       // over the axes (mu = 0 itself, infinite for Charlie's sheen, is not
@@ -433,7 +466,7 @@ class Checker {
             p.x = t.table.x.min + (t.table.x.max - t.table.x.min) * (i + 0.5) / g;
             p.y = t.table.y.min + (t.table.y.max - t.table.y.min) * (j + 0.5) / g;
           }
-        for (RandomPoint &p : grid) tasks.push_back({&t, SIZE_MAX, p.x, p.y, &p.truth, true});
+        for (RandomPoint &p : grid) tasks.push_back({&t, SIZE_MAX, p.x, p.y, 0.0, &p.truth, true});
       }
     }
     std::atomic<size_t> done{0};
@@ -450,7 +483,7 @@ class Checker {
           s.tolerance = 1e-10;
           *task.out = task.t->def->Evaluate(s, task.x, task.y);
         } else {
-          *task.out = Reference(*task.t, task.x, task.y);
+          *task.out = Reference(*task.t, task.x, task.y, task.z);
         }
       } catch (const std::domain_error &) {
         // A point where the integral is infinite (a random point drawn at
@@ -488,12 +521,12 @@ class Checker {
       return;
     }
     const size_t texel = first / t.table.channels;
-    const int x = static_cast<int>(texel % t.table.width()),
-              y = static_cast<int>(texel / t.table.width());
-    const auto at = At(t.table, t.table.x.TexelCenter(x), t.table.y.TexelCenter(y));
+    const TexelIndex i = IndexOf(t.table, texel);
+    const auto at = AtTexel(t.table, texel);
     Add(name, "finite", CheckStatus::kFail,
         std::to_string(bad) + " values or bounds are NaN or Inf, the first at texel (" +
-            std::to_string(x) + ", " + std::to_string(y) + ") " + Where(at),
+            std::to_string(i.x) + ", " + std::to_string(i.y) +
+            (t.table.is3D() ? ", " + std::to_string(i.z) : std::string()) + ") " + Where(at),
         static_cast<double>(bad), 0.0, at);
   }
 
@@ -508,14 +541,13 @@ class Checker {
     double worst = 0.0;
     std::string what;
     std::vector<std::pair<std::string, double>> at;
-    const size_t texels = static_cast<size_t>(table.width()) * table.height();
+    const size_t texels = table.texelCount();
     for (size_t i = 0; i < texels; ++i) {
-      const int x = static_cast<int>(i % table.width()), y = static_cast<int>(i / table.width());
       const auto note = [&](double excess, const std::string &text) {
         if (excess > worst) {
           worst = excess;
           what = text;
-          at = At(table, table.x.TexelCenter(x), table.y.TexelCenter(y));
+          at = AtTexel(table, i);
         }
       };
       for (int c = 0; c < table.channels; ++c) {
@@ -553,8 +585,7 @@ class Checker {
       const size_t texel = hiIndex / table.channels;
       detail += "; above 1 at " + std::to_string(aboveOne) + " of " +
                 std::to_string(table.values.size()) + " values, the largest at " +
-                Where(At(table, table.x.TexelCenter(static_cast<int>(texel % table.width())),
-                         table.y.TexelCenter(static_cast<int>(texel / table.width()))));
+                Where(AtTexel(table, texel));
     }
     Add(name, "range", CheckStatus::kPass, detail);
   }
@@ -562,7 +593,7 @@ class Checker {
   void CheckTexels(const Loaded &t) {
     const std::string name = Name(*t.def);
     const Table &table = t.table;
-    const size_t texels = static_cast<size_t>(table.width()) * table.height();
+    const size_t texels = table.texelCount();
     double worst = -1.0, worstAllowed = 0.0, worstReal = 0.0, realMax = 0.0, realSq = 0.0;
     size_t worstIndex = 0, realIndex = 0, outside = 0, overStated = 0;
     for (size_t i = 0; i < texels * table.channels; ++i) {
@@ -578,11 +609,7 @@ class Checker {
       if (real > realMax) realMax = real, realIndex = i;
       realSq += real * real;
     }
-    const auto where = [&](size_t i) {
-      const size_t texel = i / table.channels;
-      return At(table, table.x.TexelCenter(static_cast<int>(texel % table.width())),
-                table.y.TexelCenter(static_cast<int>(texel / table.width())));
-    };
+    const auto where = [&](size_t i) { return AtTexel(table, i / table.channels); };
     const size_t n = texels * table.channels;
     // The per-texel bounds are 99% claims: more than 1% + 3 sigma outside fails.
     const double allowedOutside =
@@ -621,34 +648,34 @@ class Checker {
     for (const RandomPoint &p : points_.at(t.index))
       for (int c = 0; c < table.channels; ++c) {
         if (!std::isfinite(p.truth.value[c])) continue;
-        const double lookup = Lookup(table, p.x, p.y, c);
-        const double lookupRef = Lookup(table, t.ref, p.x, p.y, c);
+        const double lookup = LookupAt(table, table.values, p.x, p.y, p.z, c);
+        const double lookupRef = LookupAt(table, t.ref, p.x, p.y, p.z, c);
         const double truth = p.truth.value[c];
         const double real = std::abs(lookup - truth);
         if (real > worstLookup) {
           worstLookup = real;
           worstInterp = std::abs(lookupRef - truth);
-          atLookup = At(table, p.x, p.y);
+          atLookup = At(table, p.x, p.y, p.z);
         }
         // The lookups of the table and of exact texel values differ by the
         // texels' errors, weighted as the lookup weights them (weights sum
         // to 1): at most the stated errorMax.
-        const double allowed =
-            t.statedErrorMax + Lookup(table, t.refError, p.x, p.y, c) + 2.0 * FloatRounding(lookup);
+        const double allowed = t.statedErrorMax + LookupAt(table, t.refError, p.x, p.y, p.z, c) +
+                               2.0 * FloatRounding(lookup);
         const double excess = std::abs(lookup - lookupRef) - allowed;
         if (excess > worstExcess) {
           worstExcess = excess;
           excessAllowed = allowed;
           excessValue = std::abs(lookup - lookupRef);
-          atExcess = At(table, p.x, p.y);
+          atExcess = At(table, p.x, p.y, p.z);
         }
       }
-    const std::string detail =
-        std::to_string(points_.at(t.index).size()) +
-        " random points, bilinear lookup against the quadrature at the point: max |lookup - "
-        "truth| " +
-        Short(worstLookup) + " at " + Where(atLookup) +
-        ", of which interpolation of exact texels " + Short(worstInterp);
+    const std::string detail = std::to_string(points_.at(t.index).size()) + " random points, " +
+                               (table.is3D() ? "trilinear" : "bilinear") +
+                               " lookup against the quadrature at the point: max |lookup - "
+                               "truth| " +
+                               Short(worstLookup) + " at " + Where(atLookup) +
+                               ", of which interpolation of exact texels " + Short(worstInterp);
     if (worstExcess > 0.0)
       Add(name, "points", CheckStatus::kFail,
           "the lookup departs from a lookup of exact texels by " + Short(excessValue) + " at " +
@@ -673,23 +700,24 @@ class Checker {
     double worst = 0.0, worstAllowed = 0.0, worstExcess = 0.0;
     std::vector<std::pair<std::string, double>> at;
     int pairs = 0;
-    for (int y = 0; y < table.height(); ++y)
-      for (int x = 0; x + 1 < table.width(); ++x) {
-        if (table.x.TexelCenter(x) < from) continue;
-        const size_t a = table.index(x, y, 0), b = table.index(x + 1, y, 0);
-        // A step against the claimed direction, beyond what the two
-        // texels' bounds allow, violates it.
-        const double against = direction * (table.values[a] - table.values[b]);
-        const double allowed = t.Bound(a) + t.Bound(b) + FloatRounding(table.values[a]) +
-                               FloatRounding(table.values[b]);
-        ++pairs;
-        if (against - allowed > worstExcess) {
-          worstExcess = against - allowed;
-          worst = against;
-          worstAllowed = allowed;
-          at = At(table, table.x.TexelCenter(x), table.y.TexelCenter(y));
+    for (int z = 0; z < table.depth(); ++z)
+      for (int y = 0; y < table.height(); ++y)
+        for (int x = 0; x + 1 < table.width(); ++x) {
+          if (table.x.TexelCenter(x) < from) continue;
+          const size_t a = table.index(x, y, z, 0), b = table.index(x + 1, y, z, 0);
+          // A step against the claimed direction, beyond what the two
+          // texels' bounds allow, violates it.
+          const double against = direction * (table.values[a] - table.values[b]);
+          const double allowed = t.Bound(a) + t.Bound(b) + FloatRounding(table.values[a]) +
+                                 FloatRounding(table.values[b]);
+          ++pairs;
+          if (against - allowed > worstExcess) {
+            worstExcess = against - allowed;
+            worst = against;
+            worstAllowed = allowed;
+            at = At(table, table.x.TexelCenter(x), table.y.TexelCenter(y), table.z.TexelCenter(z));
+          }
         }
-      }
     if (worstExcess > 0.0)
       Add(name, "monotonic", CheckStatus::kFail,
           claim + " is violated by " + Short(worst) + " between neighbours at " + Where(at) +
@@ -702,7 +730,7 @@ class Checker {
 
   void CheckClosedForm(const Loaded &t) {
     const std::optional<ClosedForm> closed = t.def->Closed(t.model);
-    if (!closed) return;
+    if (!closed || t.table.is3D()) return;  // closed forms are of 1D and 2D tables
     double worst = 0.0;
     std::vector<std::pair<std::string, double>> at;
     for (int y = 0; y < t.table.height(); ++y)
@@ -791,7 +819,9 @@ class Checker {
     const std::string subject = ofName + "+" + a->def->Name() + suffix_;
     if (!SameModel(*e, *a, subject, "average")) return;
     const Table &te = e->table, &ta = a->table;
-    if (DescribeAxis(te.y) != DescribeAxis(ta.x) || te.x.min != 0.0 || te.x.max != 1.0) {
+    // A 3D E (mu, r, eta) averages to a 2D E_avg (r, eta): E's z is E_avg's y.
+    if (DescribeAxis(te.y) != DescribeAxis(ta.x) || te.x.min != 0.0 || te.x.max != 1.0 ||
+        (te.is3D() && DescribeAxis(te.z) != DescribeAxis(ta.y))) {
       Add(subject, "average", CheckStatus::kSkipped,
           "E's rows and E_avg's texels are not at the same roughness, or E does not span mu in "
           "[0, 1]");
@@ -800,25 +830,28 @@ class Checker {
     double worst = 0.0, worstExcess = -1.0, excessValue = 0, excessAllowed = 0;
     std::vector<std::pair<std::string, double>> at, atExcess;
     const int n = te.width();
-    for (int y = 0; y < te.height(); ++y) {
-      // The midpoint rule over E's texel centres, for the table and for exact texels.
-      double rule = 0.0, ruleExact = 0.0, ruleRefError = 0.0;
-      for (int x = 0; x < n; ++x) {
-        const double w = 2.0 * te.x.TexelCenter(x) / n;
-        rule += w * te.values[te.index(x, y, 0)];
-        ruleExact += w * e->ref[te.index(x, y, 0)];
-        ruleRefError += w * e->refError[te.index(x, y, 0)];
+    for (int z = 0; z < te.depth(); ++z)
+      for (int y = 0; y < te.height(); ++y) {
+        // The midpoint rule over E's texel centres, for the table and for exact texels.
+        double rule = 0.0, ruleExact = 0.0, ruleRefError = 0.0;
+        for (int x = 0; x < n; ++x) {
+          const double w = 2.0 * te.x.TexelCenter(x) / n;
+          rule += w * te.values[te.index(x, y, z, 0)];
+          ruleExact += w * e->ref[te.index(x, y, z, 0)];
+          ruleRefError += w * e->refError[te.index(x, y, z, 0)];
+        }
+        const size_t k = ta.index(y, z, 0);  // E_avg's texel at E's row y of slice z
+        const double eavg = ta.values[k], eavgRef = a->ref[k];
+        const double dev = std::abs(rule - eavg);
+        const double allowed = std::abs(ruleExact - eavgRef) + e->statedErrorMax +
+                               a->statedErrorMax + ruleRefError + a->refError[k] +
+                               2.0 * FloatRounding(eavg);
+        const double r = ta.x.TexelCenter(y), eta = ta.y.TexelCenter(z);
+        if (dev > worst) worst = dev, at = At(ta, r, eta);
+        if (dev - allowed > worstExcess)
+          worstExcess = dev - allowed, excessValue = dev, excessAllowed = allowed,
+          atExcess = At(ta, r, eta);
       }
-      const double eavg = ta.values[y], eavgRef = a->ref[y];
-      const double dev = std::abs(rule - eavg);
-      const double allowed = std::abs(ruleExact - eavgRef) + e->statedErrorMax + a->statedErrorMax +
-                             ruleRefError + a->refError[y] + 2.0 * FloatRounding(eavg);
-      const double r = ta.x.TexelCenter(y);
-      if (dev > worst) worst = dev, at = At(ta, r, 0.0);
-      if (dev - allowed > worstExcess)
-        worstExcess = dev - allowed, excessValue = dev, excessAllowed = allowed,
-        atExcess = At(ta, r, 0.0);
-    }
     if (worstExcess > 0.0)
       Add(subject, "average", CheckStatus::kFail,
           "E_avg differs from 2 sum E mu / N over E's row by " + Short(excessValue) + " at " +
@@ -979,7 +1012,7 @@ class Checker {
   }
 
   struct RandomPoint {
-    double x = 0, y = 0;
+    double x = 0, y = 0, z = 0;
     PointValue truth;
   };
 
