@@ -46,11 +46,10 @@ struct Setup {
   SmithForm smith;
   DielectricLobes lobes;
   double eta, mu_o, s_o, L_o, invNorm;
-  double cc2;            // c_crit^2 = 1 - eta^2 for eta < 1, else 0
-  double horizonScale;   // in mu_i: min(alpha, mu_o) / 2
-  double criticalScale;  // in c, at the critical cosine
-  double grazingScale;   // in c, at o.h = 0: sqrt(eta^2 - 1) / 2 (0: none)
-  double azimuthScale;   // in phi, at the detected kinks
+  double cc2;           // c_crit^2 = 1 - eta^2 for eta < 1, else 0
+  double horizonScale;  // in mu_i: min(alpha, mu_o) / 2
+  double grazingScale;  // in c, at o.h = 0: sqrt(eta^2 - 1) / 2 (0: none)
+  double azimuthScale;  // in phi, at the detected kinks
 };
 
 enum Kind : int { kFacet = 1, kMirror = 2, kCritical = 3, kRefracted = 4, kSplit = 5 };
@@ -59,6 +58,9 @@ struct Kink {
   double T;
   int kind;
   double below, above;  // grading scales in T on either side (0: none)
+  // A square-root branch point on that side: the panel next to it is
+  // mapped quadratically instead of graded.
+  bool sqBelow = false, sqAbove = false;
 };
 
 // dc/dT at T (c = (sc T + mu_o) / sqrt(1 + T^2)).
@@ -99,13 +101,12 @@ void InnerKinks(const Setup &s, double cosPhi, double sinPhi, std::vector<Kink> 
         if (inside(T) && sc * T + mu_o > 0.0) {
           const double slope = DcDT(sc, mu_o, T);
           if (slope == 0.0) continue;
-          // In T, not in c: near the onset of total internal reflection the
-          // two roots merge with dc/dT -> 0 between them, and a scale in c
-          // would leave their narrow gap unresolved. |dc/dT| <= 1, so the last
-          // panel spans at most criticalScale in c as well.
-          const double d = s.criticalScale;
-          // Grade on the refracting side (c > c_crit) only: F = 1 on the other.
-          kinks->push_back({T, kCritical, slope < 0.0 ? d : 0.0, slope > 0.0 ? d : 0.0});
+          // On the refracting side (c > c_crit) 1 - F = sqrt(c - c_crit) times
+          // a function analytic out to the next kink (or to the other root,
+          // where the two merge at the onset), so the panel there is mapped
+          // by T = T_root + length u^2, which makes it analytic in u; on the
+          // other side F = 1.
+          kinks->push_back({T, kCritical, 0.0, 0.0, slope<0.0, slope> 0.0});
         }
     }
     if (s.lobes == DielectricLobes::kReflectionAndTransmission && mu_o > 0.0) {
@@ -150,10 +151,12 @@ std::vector<int> Signature(const Setup &s, double phi) {
 
 struct Point {
   double v, below, above;  // position and grading scales, in the variable
+  bool sqBelow = false, sqAbove = false;
 };
 
 struct Panel {
   double a, b;
+  int square = 0;  // +1: v = a + (b - a) u^2; -1: v = b - (b - a) u^2; 0: linear
 };
 
 // Panels from a to b graded geometrically (ratio 2) toward a until the one
@@ -185,10 +188,10 @@ void GradeToward(double a, double b, double delta, bool towardA, std::vector<Pan
 // about 0).
 void BuildPanels(const std::vector<Point> &points, double maxLength, double nearSingular,
                  std::vector<Panel> *out) {
-  std::vector<Panel> graded;
   for (size_t k = 0; k + 1 < points.size(); ++k) {
     const Point &p = points[k], &q = points[k + 1];
     if (!(q.v > p.v)) continue;
+    std::vector<Panel> graded;
     const bool gp = p.above > 0.0 && p.above < q.v - p.v;
     const bool gq = q.below > 0.0 && q.below < q.v - p.v;
     if (gp && gq) {
@@ -199,22 +202,54 @@ void BuildPanels(const std::vector<Point> &points, double maxLength, double near
       GradeToward(p.v, q.v, p.above, true, &graded);
     } else if (gq) {
       GradeToward(p.v, q.v, q.below, false, &graded);
+    } else if (p.sqAbove && q.sqBelow) {
+      // Two square-root ends: one quadratic panel toward each.
+      graded.push_back({p.v, 0.5 * (p.v + q.v)});
+      graded.push_back({0.5 * (p.v + q.v), q.v});
     } else {
       graded.push_back({p.v, q.v});
     }
-  }
-  for (const Panel &g : graded) {
-    double cur = g.a;
-    for (;;) {
-      double len = maxLength;
-      if (nearSingular > 0.0) len = std::min(len, std::max(cur, nearSingular));
-      if (g.b - cur <= len * 1.0000001) break;
-      // Equal pieces where only maxLength limits, so panels stay balanced.
-      out->push_back({cur, cur + len});
-      cur += len;
+    const size_t start = out->size();
+    for (const Panel &g : graded) {
+      if (nearSingular <= 0.0) {
+        // Equal pieces: a short last piece would put the piece before it
+        // next to whatever singularity sits at g.b.
+        const int m = std::max(1, static_cast<int>(std::ceil((g.b - g.a) / maxLength - 1e-9)));
+        for (int k = 0; k < m; ++k)
+          out->push_back(
+              {g.a + (g.b - g.a) * k / m, k + 1 == m ? g.b : g.a + (g.b - g.a) * (k + 1) / m});
+        continue;
+      }
+      double cur = g.a;
+      for (;;) {
+        const double len = std::min(maxLength, std::max(cur, nearSingular));
+        // The last piece is between 1/2 and 3/2 of len, for the same reason.
+        if (g.b - cur <= 1.5 * len) break;
+        out->push_back({cur, cur + len});
+        cur += len;
+      }
+      out->push_back({cur, g.b});
     }
-    out->push_back({cur, g.b});
+    std::sort(out->begin() + start, out->end(),
+              [](const Panel &x, const Panel &y) { return x.a < y.a; });
+    if (p.sqAbove) (*out)[start].square = 1;
+    if (q.sqBelow) out->back().square = -1;
   }
+}
+
+// The node of a panel at u in [0, 1]; returns dv/du.
+double MapNode(const Panel &p, double u, double *v) {
+  const double len = p.b - p.a;
+  if (p.square > 0) {
+    *v = p.a + len * u * u;
+    return 2.0 * len * u;
+  }
+  if (p.square < 0) {
+    *v = p.b - len * u * u;
+    return 2.0 * len * u;
+  }
+  *v = p.a + len * u;
+  return len;
 }
 
 // The facet weight times the measure: (sc T + mu_o) / (mu_o + L_o) w(h)
@@ -247,6 +282,7 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
     // grading on both sides (a kink just beside a fixed split would leave
     // the far side's panel next to its singularity ungraded).
     double T_s = alpha, sBelow = 0.0, sAbove = 0.0;
+    bool qBelow = false, qAbove = false;
     int at = -1;
     for (size_t k = 0; k < kinks.size(); ++k) {
       const double ratio = kinks[k].T / alpha;
@@ -258,6 +294,8 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
       T_s = kinks[at].T;
       sBelow = kinks[at].below;
       sAbove = kinks[at].above;
+      qBelow = kinks[at].sqBelow;
+      qAbove = kinks[at].sqAbove;
     }
     const auto interior = [&](size_t k) {
       return static_cast<int>(k) != at && kinks[k].kind != kSplit;
@@ -267,25 +305,27 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
     points.push_back({0.0, 0.0, 0.0});
     for (size_t k = 0; k < kinks.size(); ++k)
       if (interior(k) && kinks[k].T < coreEnd)
-        points.push_back({kinks[k].T / alpha, kinks[k].below / alpha, kinks[k].above / alpha});
+        points.push_back({kinks[k].T / alpha, kinks[k].below / alpha, kinks[k].above / alpha,
+                          kinks[k].sqBelow, kinks[k].sqAbove});
     const bool coreEndsAtFacet = T_end <= T_s;
-    Point coreLast{coreEnd / alpha, coreEndsAtFacet ? 0.0 : sBelow / alpha, 0.0};
+    Point coreLast{coreEnd / alpha, coreEndsAtFacet ? 0.0 : sBelow / alpha, 0.0,
+                   !coreEndsAtFacet && qBelow, false};
     if (coreEndsAtFacet && s.grazingScale > 0.0)
       coreLast.below = s.grazingScale / std::abs(DcDT(sc, s.mu_o, T_end)) / alpha;
     points.push_back(coreLast);
     BuildPanels(points, kMaxPanel, 0.0, &panels);
     for (const Panel &p : panels) {
-      const double len = p.b - p.a;
       double part = 0.0;
       for (int j = 0; j < n; ++j) {
-        const double x = p.a + len * rule.x[j];
+        double x = 0.0;
+        const double jac = MapNode(p, rule.x[j], &x);
         const double q = 1.0 + x * x, T = alpha * x;
         const double cosTheta = 1.0 / std::sqrt(1.0 + T * T), sinTheta = T * cosTheta;
         // (c / cos) = sc T + mu_o; d(xi)/dx = 2 x / (1 + x^2)^2.
-        part +=
-            rule.w[j] * NodeValue(s, sc, cosTheta, sinTheta, (sc * T + s.mu_o) * 2.0 * x / (q * q));
+        part += rule.w[j] * jac *
+                NodeValue(s, sc, cosTheta, sinTheta, (sc * T + s.mu_o) * 2.0 * x / (q * q));
       }
-      sum += part * len;
+      sum += part;
       *evaluations += n;
     }
     if (T_end > T_s) {
@@ -300,22 +340,23 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
       for (size_t r = kinks.size(); r-- > 0;)
         if (interior(r) && kinks[r].T > T_s) {
           const double dw = alpha / (kinks[r].T * kinks[r].T);  // |dw / dT|
-          points.push_back({alpha / kinks[r].T, kinks[r].above * dw, kinks[r].below * dw});
+          points.push_back({alpha / kinks[r].T, kinks[r].above * dw, kinks[r].below * dw,
+                            kinks[r].sqAbove, kinks[r].sqBelow});
         }
-      points.push_back({alpha / T_s, sAbove * alpha / (T_s * T_s), 0.0});
+      points.push_back({alpha / T_s, sAbove * alpha / (T_s * T_s), 0.0, qAbove, false});
       BuildPanels(points, kMaxPanel, alpha, &panels);
       for (const Panel &p : panels) {
-        const double len = p.b - p.a;
         double part = 0.0;
         for (int j = 0; j < n; ++j) {
-          const double w = p.a + len * rule.x[j];
+          double w = 0.0;
+          const double jac = MapNode(p, rule.x[j], &w);
           const double r = std::sqrt(w * w + alpha * alpha), q = 1.0 + w * w;
           const double cosTheta = w / r, sinTheta = alpha / r;
           // (c / cos) d(xi)/dw = (c r / w) 2 w / (1 + w^2)^2 = 2 c r / (1 + w^2)^2.
           const double c = sc * sinTheta + s.mu_o * cosTheta;
-          part += rule.w[j] * NodeValue(s, sc, cosTheta, sinTheta, 2.0 * c * r / (q * q));
+          part += rule.w[j] * jac * NodeValue(s, sc, cosTheta, sinTheta, 2.0 * c * r / (q * q));
         }
-        sum += part * len;
+        sum += part;
         *evaluations += n;
       }
     }
@@ -325,22 +366,24 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
   const double tEnd = std::min(kBeckmannCut, T_end / alpha);
   points.push_back({0.0, 0.0, 0.0});
   for (const Kink &k : kinks)
-    if (k.T / alpha < tEnd) points.push_back({k.T / alpha, k.below / alpha, k.above / alpha});
+    if (k.T / alpha < tEnd)
+      points.push_back({k.T / alpha, k.below / alpha, k.above / alpha, k.sqBelow, k.sqAbove});
   Point last{tEnd, 0.0, 0.0};
   if (T_end / alpha <= kBeckmannCut && s.grazingScale > 0.0)
     last.below = s.grazingScale / std::abs(DcDT(sc, s.mu_o, T_end)) / alpha;
   points.push_back(last);
   BuildPanels(points, kMaxPanel, 0.0, &panels);
   for (const Panel &p : panels) {
-    const double len = p.b - p.a;
     double part = 0.0;
     for (int j = 0; j < n; ++j) {
-      const double t = p.a + len * rule.x[j], T = alpha * t;
+      double t = 0.0;
+      const double jac = MapNode(p, rule.x[j], &t);
+      const double T = alpha * t;
       const double cosTheta = 1.0 / std::sqrt(1.0 + T * T), sinTheta = T * cosTheta;
-      part += rule.w[j] *
+      part += rule.w[j] * jac *
               NodeValue(s, sc, cosTheta, sinTheta, (sc * T + s.mu_o) * 2.0 * t * std::exp(-t * t));
     }
-    sum += part * len;
+    sum += part;
     *evaluations += n;
   }
   return sum;
@@ -359,7 +402,6 @@ Setup MakeSetup(NdfKind kind, SmithForm smith, DielectricLobes lobes, double alp
   s.invNorm = 1.0 / (mu_o + s.L_o);
   s.cc2 = eta < 1.0 ? (1.0 - eta) * (1.0 + eta) : 0.0;
   s.horizonScale = std::max(0.5 * std::min(alpha, mu_o), kSmallestScale);
-  s.criticalScale = std::pow(1e-3 * tolerance, 2.0 / 3.0);
   s.grazingScale = eta > 1.0 ? 0.5 * std::sqrt((eta - 1.0) * (eta + 1.0)) : 0.0;
   s.azimuthScale = Clamp(std::sqrt(1e-3 * tolerance), 1e-9, 0.1);
   return s;

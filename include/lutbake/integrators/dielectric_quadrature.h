@@ -33,11 +33,15 @@
 // The panels end at every kink and are graded toward it (ratio 2) down to
 // the scale of the nearest singularity off the real axis: at the horizons,
 // G2 / mu_o's pole and mu Lambda's branch points at |mu_i| ~ min(alpha,
-// mu_o) / 2; at o.h = 0, F's branch point at c = +-i sqrt(eta^2 - 1); at
-// the critical cosine, down to (1e-3 tolerance)^(2/3) in c (F = 1 - O(sqrt),
-// so the last panel's error is O(length^(3/2))). GGX's tail variable has
-// singularities at w = +-i alpha (1 + T^2 = 0): no tail panel is longer than
-// max(its start, alpha).
+// mu_o) / 2; at o.h = 0, F's branch point at c = +-i sqrt(eta^2 - 1). At
+// the critical cosine 1 - F = sqrt(c - c_crit) g(c), g analytic: the panel
+// on the refracting side is mapped by v = v_root +- length u^2, which makes
+// the integrand analytic in u (that panel reaches the next kink, or half
+// way to it). GGX's core/tail split (T = alpha) moves onto a kink within a
+// factor 2 of it, so that no kink sits just beside an ungraded panel end;
+// the tail variable has singularities at w = +-i alpha (1 + T^2 = 0): no
+// tail panel is longer than max(its start, alpha). Panels are at most 0.5
+// long in x, w, t and phi, split into equal pieces.
 //
 // The outer integral (phi in [0, pi]) is analytic except where the inner
 // structure changes: at phi = pi/2, where T_c and T_r go to infinity as
