@@ -1,0 +1,52 @@
+#include "lutbake/integrators/dielectric_estimator.h"
+
+#include <stdexcept>
+
+namespace lutbake {
+
+namespace {
+
+void CheckArguments(double alpha, double eta) {
+  if (!(alpha > 0.0 && alpha <= 1.0))
+    throw std::invalid_argument("dielectric estimator: alpha must lie in (0, 1]");
+  if (!(eta >= 1.0 / 16.0 && eta <= 16.0))
+    throw std::invalid_argument("dielectric estimator: eta must lie in [1/16, 16]");
+}
+
+}  // namespace
+
+DielectricAlbedoEstimator::DielectricAlbedoEstimator(NdfKind ndf, SmithForm smith,
+                                                     DielectricLobes lobes, double alpha,
+                                                     double mu_o, double eta)
+    : ndf_{ndf, alpha}, smith_(smith), lobes_(lobes), eta_(eta) {
+  CheckArguments(alpha, eta);
+  if (!(mu_o > 0.0 && mu_o <= 1.0))
+    throw std::invalid_argument("dielectric estimator: mu_o must lie in (0, 1]");
+  o_ = ViewDirection(mu_o);
+  L_o_ = ndf_.MuLambda(mu_o);
+}
+
+double DielectricAlbedoEstimator::Weight(double u0, double u1) const {
+  const Vec3 h = ndf_.SampleVisibleNormal(o_, u0, u1);
+  const double c = Dot(o_, h);
+  // The mirror's cosine, 2 c h.z - mu_o; the facet weight handles c <= 0
+  // (measure zero under D_o) and both horizons.
+  const double mu_r = 2.0 * c * h.z - o_.z;
+  return DielectricFacetWeight(ndf_, smith_, lobes_, eta_, o_.z, L_o_, c, h.z, mu_r);
+}
+
+DielectricAverageEstimator::DielectricAverageEstimator(NdfKind ndf, SmithForm smith,
+                                                       DielectricLobes lobes, double alpha,
+                                                       double eta)
+    : kind_(ndf), smith_(smith), lobes_(lobes), alpha_(alpha), eta_(eta) {
+  CheckArguments(alpha, eta);
+}
+
+double DielectricAverageEstimator::Weight(double u0, double u1, double u2) const {
+  const double mu_o = u2;
+  if (!(mu_o > 0.0)) return 0.0;  // weight 2 mu_o w = 0 at mu_o = 0
+  const DielectricAlbedoEstimator e(kind_, smith_, lobes_, alpha_, mu_o, eta_);
+  return 2.0 * mu_o * e.Weight(u0, u1);
+}
+
+}  // namespace lutbake
