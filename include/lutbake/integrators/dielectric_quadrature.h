@@ -103,7 +103,9 @@ DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, Diel
 // refracted support (o.i < -1/eta for eta > 1, -eta for eta < 1; and h.z > 0,
 // mu_i <= -mu_o / eta or >= -mu_o / eta). Bound: 16 x the sum of |K15 - G7|
 // of both levels. Meant for alpha >= ~0.01 (the lobe's peak, of width alpha,
-// must be found by bisection) and mu_o > 0.
+// must be found by bisection), mu_o > 0 and |eta - 1| >= ~0.1: at eta = 1
+// the transmitted lobe is a Dirac at i = -o (every facet passes o straight
+// through), which no rule over i can integrate; near 1 it is that narrow.
 DielectricIntegral IntegrateDielectricAlbedoAdaptive(NdfKind ndf, SmithForm smith,
                                                      DielectricLobes lobes, double alpha,
                                                      double mu_o, double eta, double tolerance);
