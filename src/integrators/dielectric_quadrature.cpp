@@ -428,8 +428,12 @@ std::vector<Panel> OuterPanels(const Setup &s) {
   points.push_back({0.5 * kPi, a, a});
   std::vector<int> previous = Signature(s, 0.0);
   double previousPhi = 0.0;
-  for (int j = 1; j <= kScanAzimuths; ++j) {
-    const double phi = kPi * j / kScanAzimuths;
+  // For eta >= 1 the only kinks are T_r and the range's end T_c, with T_r <
+  // T_c wherever T_c exists (mu_r = -mu_o < 0 at o.h = 0): the sequence never
+  // changes, and the scan (~0.5 ms) is skipped.
+  const int scan = s.cc2 > 0.0 ? kScanAzimuths : 0;
+  for (int j = 1; j <= scan; ++j) {
+    const double phi = kPi * j / scan;
     std::vector<int> current = Signature(s, phi);
     if (current != previous) {
       double lo = previousPhi, hi = phi;

@@ -64,6 +64,18 @@
 // estimate validated against the adaptive reference below and an independent
 // brute-force rule in the tests, not a theorem.
 //
+// Measured (tolerance 1e-8) against the adaptive reference at 1e-10..1e-11:
+// 144 grid points (GGX and Beckmann, correlated, glass; eta in {1/2.42,
+// 1/1.5, 1/1.33, 1.33, 1.5, 2.42}, mu_o in {0.05, 0.3, 0.7, 1}, r in {0.3,
+// 0.6, 1}): real error at most 1.6e-9, all within the bound; 107 random
+// points (both NDFs and Smith forms and lobes, mu_o 0.02..1, r 0.3..1, eta
+// 0.4..2.5): at most 1.1e-9 and 0.37 of the bound. Cost on 16 x 16 texel
+// centres (GGX correlated glass): eta = 1.5 ~9,600 facet weights a point
+// (6,000 at r ~ 1 to 23,000 at r = 1/32), 0.3 to 2 ms on this shared
+// machine; eta = 1/1.5 ~370,000 (10 to 100 ms), 3 of 256 texels ending at
+// a bound of up to 1.4e-8 (not `converged`). The outer azimuth grading at
+// the detected kinks dominates for eta < 1.
+//
 // Domain: alpha in [0, 1] (alpha = 0: the exact smooth values, `exact`),
 // mu_o in [0, 1] (0 the grazing limit), eta in [1/16, 16]; else
 // std::invalid_argument.
@@ -103,7 +115,9 @@ DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, Diel
 // refracted support (o.i < -1/eta for eta > 1, -eta for eta < 1; and h.z > 0,
 // mu_i <= -mu_o / eta or >= -mu_o / eta). Bound: 16 x the sum of |K15 - G7|
 // of both levels. Meant for alpha >= ~0.01 (the lobe's peak, of width alpha,
-// must be found by bisection) and mu_o > 0.
+// must be found by bisection), mu_o > 0 and |eta - 1| >= ~0.1: at eta = 1
+// the transmitted lobe is a Dirac at i = -o (every facet passes o straight
+// through), which no rule over i can integrate; near 1 it is that narrow.
 DielectricIntegral IntegrateDielectricAlbedoAdaptive(NdfKind ndf, SmithForm smith,
                                                      DielectricLobes lobes, double alpha,
                                                      double mu_o, double eta, double tolerance);
