@@ -6,11 +6,15 @@
 
 namespace lutbake {
 
-const TableDefinition &DirectionalAlbedoTable();   // E.cpp
-const TableDefinition &AverageAlbedoTable();       // Eavg.cpp
-const TableDefinition &FresnelAverageTable();      // Favg.cpp
-const TableDefinition &SplitSumTable();            // dfg.cpp
-const TableDefinition &SheenAlbedoTable();         // sheen_E.cpp
-const TableDefinition &SheenAverageAlbedoTable();  // sheen_Eavg.cpp
+const TableDefinition &DirectionalAlbedoTable();      // E.cpp
+const TableDefinition &AverageAlbedoTable();          // Eavg.cpp
+const TableDefinition &FresnelAverageTable();         // Favg.cpp
+const TableDefinition &SplitSumTable();               // dfg.cpp
+const TableDefinition &SheenAlbedoTable();            // sheen_E.cpp
+const TableDefinition &SheenAverageAlbedoTable();     // sheen_Eavg.cpp
+const TableDefinition &GlassAlbedoTable();            // glass_E.cpp
+const TableDefinition &GlassAverageAlbedoTable();     // glass_Eavg.cpp
+const TableDefinition &SpecularAlbedoTable();         // spec_E.cpp
+const TableDefinition &SpecularAverageAlbedoTable();  // spec_Eavg.cpp
 
 }  // namespace lutbake

@@ -1,0 +1,235 @@
+#include "dielectric_table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "lutbake/integrators/dielectric_estimator.h"
+#include "lutbake/tables/bake.h"
+#include "sampled_texel.h"
+
+namespace lutbake {
+
+namespace {
+
+// The relative IORs of water, glass and diamond, and their inverses: nodes
+// of every default eta axis.
+constexpr double kMaterialEtas[] = {1.33, 1.5, 2.42};
+
+}  // namespace
+
+Metadata DielectricTable::ModelMetadata(const BakeSettings &s) const {
+  const bool transmission = Lobes() == DielectricLobes::kReflectionAndTransmission;
+  return {
+      {"ndf", std::string(ToString(s.ndf))},
+      {"smith", std::string(ToString(s.smith))},
+      {"fresnel", "dielectric (exact, unpolarised, at o.h)"},
+      {"lobes", std::string(ToString(Lobes()))},
+      {"transmission", transmission ? "the fraction of the energy arriving along o that passes: "
+                                      "without the eta^2 radiance factor"
+                                    : "none"}};
+}
+
+std::string DielectricTable::DescribeModel(const BakeSettings &s) const {
+  return std::string(ToString(s.ndf)) + " " + std::string(ToString(s.smith)) + ", " +
+         std::string(ToString(Lobes()));
+}
+
+bool DielectricTable::ReadModel(const Table &table, BakeSettings *s,
+                                std::vector<std::string> *problems) const {
+  const size_t before = problems->size();
+  const std::string ndf = RequiredMetadata(table, "ndf", problems),
+                    smith = RequiredMetadata(table, "smith", problems);
+  if (ndf != "ggx" && ndf != "beckmann") problems->push_back("ndf '" + ndf + "' unknown");
+  if (smith != "correlated" && smith != "separable")
+    problems->push_back("smith '" + smith + "' unknown");
+  s->ndf = ndf == "beckmann" ? NdfKind::kBeckmann : NdfKind::kGgx;
+  s->smith = smith == "separable" ? SmithForm::kSeparable : SmithForm::kCorrelated;
+  if (RequiredMetadata(table, "alpha", problems) != "alpha = perceptualRoughness^2")
+    problems->push_back("alpha is not perceptualRoughness^2");
+  if (RequiredMetadata(table, "lobes", problems) != ToString(Lobes()))
+    problems->push_back("lobes is not '" + std::string(ToString(Lobes())) + "'");
+  // 3D: (mu, r, eta); the averages: (r, eta).
+  const bool threeD = PlannedRoughnessAxis() == 1;
+  const Axis &r = threeD ? table.y : table.x;
+  const Axis &eta = threeD ? table.z : table.y;
+  if (r.name != "perceptualRoughness" || r.min < 0.0 || r.max > 1.0)
+    problems->push_back("the roughness axis is not perceptualRoughness within [0, 1]");
+  if (eta.name != "eta" || !(eta.min > 0.0))
+    problems->push_back("the " + std::string(threeD ? "z" : "y") + " axis is not eta > 0");
+  if (threeD && (table.x.name != "mu" || table.x.min < 0.0 || table.x.max > 1.0))
+    problems->push_back("axis x is not mu within [0, 1]");
+  if (threeD && !table.is3D()) problems->push_back(table.Name() + " is not 3D");
+  if (!threeD && (table.is3D() || !table.is2D())) problems->push_back(table.Name() + " is not 2D");
+  return problems->size() == before;
+}
+
+std::string DielectricTable::QuadratureDescription(const BakeSettings &s) const {
+  return s.estimator == Estimator::kAdaptiveQuadrature
+             ? "adaptive Gauss-Kronrod quadrature over the light direction"
+             : "panel Gauss-Legendre quadrature over the half vector, panels at the kinks of "
+               "the facet weight, two orders";
+}
+
+std::string DielectricTable::QuadratureBound(const BakeSettings &s) const {
+  if (s.estimator == Estimator::kAdaptiveQuadrature)
+    return "16 x the Gauss-Kronrod estimates of both levels";
+  return "quadrature texels: twice the panel rule's difference between two orders plus its "
+         "floor (dielectric_quadrature.h)";
+}
+
+std::string DielectricTable::EstimatorProblem(Estimator e) const {
+  if (e == Estimator::kCosine || e == Estimator::kUniform || e == Estimator::kNdf)
+    return std::string(Name()) +
+           " samples visible normals only (its weight is then at most 1); accepted: "
+           "quadrature, adaptive, vndf, vndf-random";
+  return "";
+}
+
+Axis DielectricTable::EtaAxis(int size) {
+  std::vector<double> nodes;
+  const int n = std::max(size, 2);
+  for (int i = 0; i < n; ++i) {
+    const double s = -0.5 + static_cast<double>(i) / (n - 1);  // in [-1/2, 1/2]
+    nodes.push_back((1.0 + s) / (1.0 - s));
+  }
+  nodes.push_back(1.0);
+  for (double eta : kMaterialEtas) {
+    nodes.push_back(eta);
+    nodes.push_back(1.0 / eta);
+  }
+  std::sort(nodes.begin(), nodes.end());
+  // Values closer than 1e-9 relative are one node (eta = 1 from an odd n).
+  std::vector<double> unique;
+  for (double v : nodes)
+    if (unique.empty() || v > unique.back() * (1.0 + 1e-9)) unique.push_back(v);
+  return ListedAxis("eta", std::move(unique));
+}
+
+PointCoordinate DielectricTable::RoughnessCoordinate() {
+  PointCoordinate c;
+  c.option = "roughness";
+  c.min = 0.0;
+  c.max = 1.0;
+  c.accepted = "comma-separated numbers in [0, 1] (0: the smooth interface, exact)";
+  return c;
+}
+
+PointCoordinate DielectricTable::MuCoordinate() {
+  PointCoordinate c;
+  c.option = "mu";
+  c.accepted = "comma-separated numbers in [0, 1]";
+  return c;
+}
+
+PointCoordinate DielectricTable::EtaCoordinate() {
+  PointCoordinate c;
+  c.option = "eta";
+  c.min = 1.0 / 16.0;
+  c.max = 16.0;
+  c.accepted =
+      "comma-separated relative IORs from 1/16 to 16 (eta < 1: leaving the denser "
+      "medium)";
+  return c;
+}
+
+double DielectricTable::AlphaOf(double r) {
+  if (!(r >= 0.0 && r <= 1.0))
+    throw std::domain_error("roughness " + FormatDouble(r) + " is outside [0, 1]");
+  return r * r;
+}
+
+void DielectricTable::CheckEta(double eta) {
+  if (!(eta >= 1.0 / 16.0 && eta <= 16.0))
+    throw std::domain_error("eta " + FormatDouble(eta) + " is outside [1/16, 16]");
+}
+
+PointValue DielectricTable::FromIntegral(const DielectricIntegral &q) {
+  PointValue out;
+  out.value[0] = q.value;
+  out.error[0] = q.bound;
+  out.evaluations = q.evaluations;
+  out.quadrature = true;
+  out.exact = q.exact;
+  return out;
+}
+
+double DielectricTable::PanelTolerance(const BakeSettings &s) {
+  return s.tolerance > 0.0 ? s.tolerance : kDefaultQuadratureTolerance;
+}
+
+double DielectricTable::AdaptiveTolerance(const BakeSettings &s) {
+  // As for the other tables: a tolerance run asks for EPS / 32.
+  return s.tolerance > 0.0 ? s.tolerance / (2.0 * kQuadratureErrorFactor)
+                           : kQuadratureDefaultTolerance;
+}
+
+PointValue DielectricTable::EvaluateAlbedo(const BakeSettings &s, double mu, double r,
+                                           double eta) const {
+  const double alpha = AlphaOf(r);
+  CheckEta(eta);
+  if (!(mu >= 0.0 && mu <= 1.0))
+    throw std::domain_error("mu " + FormatDouble(mu) + " is outside [0, 1]");
+  const DielectricLobes lobes = Lobes();
+  if (s.estimator == Estimator::kAdaptiveQuadrature && alpha > 0.0 && mu > 0.0)
+    return FromIntegral(IntegrateDielectricAlbedoAdaptive(s.ndf, s.smith, lobes, alpha, mu, eta,
+                                                          AdaptiveTolerance(s)));
+  if (IsQuadrature(s.estimator) || alpha == 0.0)
+    return FromIntegral(
+        IntegrateDielectricAlbedo(s.ndf, s.smith, lobes, alpha, mu, eta, PanelTolerance(s)));
+  const DielectricAlbedoEstimator estimator(s.ndf, s.smith, lobes, alpha, mu, eta);
+  const uint64_t seed = SampleSeed(
+      SeedId(), s, PointSeed(SeedId(), mu, alpha, PointSeed(SeedId(), eta, 0.0, s.seed)));
+  PointValue out;
+  const bool sampled = SampleTexel<2, 1>(
+      s,
+      [&](const PointView &p, double *w[]) {
+        for (size_t k = 0; k < p.n; ++k) w[0][k] = estimator.Weight(p.u[0][k], p.u[1][k]);
+      },
+      s.samples, seed, &out, estimator.MaxWeight());
+  if (sampled) return out;
+  PointValue q = FromIntegral(
+      IntegrateDielectricAlbedo(s.ndf, s.smith, lobes, alpha, mu, eta, PanelTolerance(s)));
+  q.samples = out.samples;  // the rounds spent before switching still count
+  return q;
+}
+
+PointValue DielectricTable::EvaluateAverage(const BakeSettings &s, double r, double eta) const {
+  const double alpha = AlphaOf(r);
+  CheckEta(eta);
+  const DielectricLobes lobes = Lobes();
+  if (IsQuadrature(s.estimator) || alpha == 0.0)
+    return FromIntegral(
+        IntegrateDielectricAverage(s.ndf, s.smith, lobes, alpha, eta, PanelTolerance(s)));
+  const DielectricAverageEstimator estimator(s.ndf, s.smith, lobes, alpha, eta);
+  const uint64_t seed = SampleSeed(SeedId(), s, PointSeed(SeedId(), alpha, eta, s.seed));
+  PointValue out;
+  const bool sampled = SampleTexel<3, 1>(
+      s,
+      [&](const PointView &p, double *w[]) {
+        for (size_t k = 0; k < p.n; ++k)
+          w[0][k] = estimator.Weight(p.u[0][k], p.u[1][k], p.u[2][k]);
+      },
+      SamplesPerTexel(s), seed, &out, estimator.MaxWeight());
+  if (sampled) return out;
+  PointValue q = FromIntegral(
+      IntegrateDielectricAverage(s.ndf, s.smith, lobes, alpha, eta, PanelTolerance(s)));
+  q.samples = out.samples;
+  return q;
+}
+
+void DielectricTable::AddNotes(HeaderText *text) const {
+  text->notes.push_back("Roughness is perceptual roughness r; the NDF width is alpha = r^2.");
+  text->notes.push_back(
+      "eta = (IOR on the far side) / (IOR on the side of the view): eta > 1 entering the "
+      "denser medium, eta < 1 leaving it (total internal reflection included).");
+  text->notes.push_back(
+      "Fresnel: the exact unpolarised dielectric reflectance at the microfacet, F(o.h).");
+  if (Lobes() == DielectricLobes::kReflectionAndTransmission)
+    text->notes.push_back(
+        "Transmission counts energy: without the eta^2 radiance factor, so a smooth interface "
+        "gives exactly 1.");
+  text->constants.push_back("inline constexpr bool kAlphaIsPerceptualRoughnessSquared = true;");
+}
+
+}  // namespace lutbake

@@ -1,0 +1,187 @@
+// The rough-dielectric tables (glass_E, glass_Eavg, spec_E, spec_Eavg)
+// through the table definitions and the command line: the exact limits
+// (smooth interface, eta = 1), the reciprocity of the transmitted averages
+// between the two sides, eval of three coordinates, a small 3D bake in every
+// format checked by `lutbake check`, and the header's trilinear lookup and
+// helpers compiled and run.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "lutbake/formats/binary_format.h"
+#include "lutbake/formats/table_reader.h"
+#include "lutbake/integrators/fresnel_average.h"
+#include "lutbake/models/fresnel.h"
+#include "lutbake/models/ndf.h"
+#include "lutbake/tables/bake.h"
+#include "lutbake/tables/lookup.h"
+#include "support/cli_run.h"
+
+namespace lutbake {
+namespace {
+
+namespace fs = std::filesystem;
+using test::Lutbake;
+
+std::vector<nlohmann::json> JsonLines(const std::string &text) {
+  std::vector<nlohmann::json> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) lines.push_back(nlohmann::json::parse(line));
+  return lines;
+}
+
+BakeSettings Model(NdfKind ndf, SmithForm smith) {
+  BakeSettings s;
+  s.ndf = ndf;
+  s.smith = smith;
+  return s;
+}
+
+TEST(GlassTables, AreDefinedWithAListedEtaAxis) {
+  const TableDefinition &glass = TableNamed("glass_E");
+  Axis x, y, z;
+  DefaultAxes(glass, BakeSettings{}, &x, &y, &z);
+  EXPECT_EQ(x.name, "mu");
+  EXPECT_EQ(y.name, "perceptualRoughness");
+  ASSERT_EQ(z.name, "eta");
+  ASSERT_TRUE(z.listed());
+  // Uniform in s = (eta - 1) / (eta + 1) over [-1/2, 1/2], with eta = 1 and
+  // water, glass and diamond on both sides as nodes of their own.
+  EXPECT_DOUBLE_EQ(z.nodes.front(), 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(z.nodes.back(), 3.0);
+  for (double eta : {1.0, 1.33, 1.5, 2.42, 1 / 1.33, 1 / 1.5, 1 / 2.42})
+    EXPECT_NE(std::find(z.nodes.begin(), z.nodes.end(), eta), z.nodes.end()) << eta;
+  EXPECT_EQ(TableNamed("glass_Eavg").Relations().averageOf, "glass_E");
+  EXPECT_EQ(TableNamed("spec_Eavg").Relations().averageOf, "spec_E");
+}
+
+// r = 0: a smooth interface scatters everything (glass_E = F + T = 1) and
+// reflects F(mu) (spec_E), the exact dielectric Fresnel, on both sides.
+// eta = 1: nothing reflects (spec_E = 0) and every facet passes o straight
+// through, so glass_E = G2(o, -o) / G1(o): (1 + Lambda) / (1 + 2 Lambda)
+// with the correlated G2, G1(mu) with the separable one.
+TEST(GlassTables, ExactLimits) {
+  const TableDefinition &glass = TableNamed("glass_E"), &spec = TableNamed("spec_E");
+  for (NdfKind ndf : {NdfKind::kGgx, NdfKind::kBeckmann})
+    for (SmithForm smith : {SmithForm::kCorrelated, SmithForm::kSeparable}) {
+      const BakeSettings s = Model(ndf, smith);
+      for (double eta : {1 / 2.42, 1 / 1.33, 1.33, 2.42})
+        for (double mu : {0.05, 0.5, 1.0}) {
+          EXPECT_NEAR(glass.Evaluate3D(s, mu, 0.0, eta).value[0], 1.0, 1e-15);
+          EXPECT_NEAR(spec.Evaluate3D(s, mu, 0.0, eta).value[0], ExactFresnel(eta, 0.0, mu), 1e-15);
+        }
+      for (double r : {0.3, 0.7, 1.0})
+        for (double mu : {0.1, 0.5, 0.9}) {
+          const Ndf n{ndf, r * r};
+          const double lambda = n.MuLambda(mu) / mu;
+          const double expected = smith == SmithForm::kCorrelated
+                                      ? (1.0 + lambda) / (1.0 + 2.0 * lambda)
+                                      : 1.0 / (1.0 + lambda);
+          const PointValue g = glass.Evaluate3D(s, mu, r, 1.0);
+          EXPECT_NEAR(g.value[0], expected, g.error[0] + 1e-12) << r << " " << mu;
+          EXPECT_NEAR(spec.Evaluate3D(s, mu, r, 1.0).value[0], 0.0, 1e-12);
+        }
+    }
+}
+
+// Reciprocity between the sides: the transmitted energy averages obey
+//   T_avg(eta) = eta^2 T_avg(1/eta),  T_avg = glass_Eavg - spec_Eavg,
+// as 1 - F_avg(eta) = eta^2 (1 - F_avg(1/eta)) does for a smooth interface.
+TEST(GlassTables, TransmittedAveragesAreReciprocal) {
+  const TableDefinition &glass = TableNamed("glass_Eavg"), &spec = TableNamed("spec_Eavg");
+  const BakeSettings s;
+  for (double eta : {1.33, 1.5, 2.42})
+    for (double r : {0.0, 0.3, 0.8}) {
+      const PointValue g = glass.Evaluate(s, r, eta), sp = spec.Evaluate(s, r, eta);
+      const PointValue gi = glass.Evaluate(s, r, 1 / eta), spi = spec.Evaluate(s, r, 1 / eta);
+      const double outside = g.value[0] - sp.value[0], inside = gi.value[0] - spi.value[0];
+      const double allowed =
+          g.error[0] + sp.error[0] + eta * eta * (gi.error[0] + spi.error[0]) + 1e-12;
+      EXPECT_NEAR(outside, eta * eta * inside, allowed) << eta << " r " << r;
+    }
+  // The smooth case against the Fresnel average itself.
+  const FresnelAverageResult favg = ExactFresnelAverage(1.5, 0.0);
+  EXPECT_NEAR(spec.Evaluate(s, 0.0, 1.5).value[0], favg.value, favg.error + 1e-12);
+}
+
+TEST(GlassTables, EvalTakesThreeCoordinates) {
+  const test::CommandResult run = Lutbake(
+      "eval --table glass_E --mu 0.5,1 --roughness 0,0.5 --eta 1.5,0.6666666666666666 --json",
+      true);
+  ASSERT_EQ(run.status, 0) << run.output;
+  const auto lines = JsonLines(run.output);
+  ASSERT_EQ(lines.size(), 8u);
+  // z outermost, then y, x inner.
+  EXPECT_EQ(double(lines[0]["eta"]), 1.5);
+  EXPECT_EQ(double(lines[0]["roughness"]), 0.0);
+  EXPECT_EQ(double(lines[1]["mu"]), 1.0);
+  EXPECT_EQ(double(lines[4]["eta"]), 0.6666666666666666);
+  EXPECT_EQ(double(lines[0]["value"]), 1.0);  // smooth: exactly 1
+  for (const auto &p : lines) {
+    EXPECT_GE(double(p["value"]), 0.0);
+    EXPECT_LE(double(p["value"]), 1.0 + double(p["error"]));
+  }
+  for (const std::string bad :
+       {"--table glass_E --mu 0.5 --roughness 0.5",
+        "--table glass_E --mu 0.5 --roughness 0.5 "
+        "--eta 20",
+        "--table glass_Eavg --mu 0.5 --roughness 0.5 --eta 1.5",
+        "--table glass_E --mu 0.5 --roughness 0.5 --eta 1.5 --estimator cosine"}) {
+    const test::CommandResult r = Lutbake("eval " + bad);
+    EXPECT_EQ(r.status, 2) << bad << "\n" << r.output;
+  }
+}
+
+// A small bake of all four in every format, then `lutbake check`: the 3D
+// files read back, every texel within its bound of the adaptive reference,
+// the averages against their tables' rows.
+TEST(GlassTables, SmallBakePassesCheck) {
+  const fs::path dir = test::Scratch("glass_bake");
+  const test::CommandResult bake =
+      Lutbake("bake --out " + dir.string() +
+              " --tables glass_E,glass_Eavg,spec_E,spec_Eavg --size 8 --eta-size 3 --format "
+              "exr,bin,header --error-map");
+  ASSERT_EQ(bake.status, 0) << bake.output;
+  const Table exr = ReadExrTable((dir / "glass_E.exr").string());
+  ASSERT_TRUE(exr.is3D());
+  EXPECT_EQ(exr.z.count, 9);  // 3 uniform in s (1/3, 1, 3) and 6 materials
+  const Table bin = ReadBinaryTable((dir / "glass_E.bin").string());
+  ASSERT_EQ(bin.values.size(), exr.values.size());
+  const test::CommandResult check = Lutbake("check " + dir.string());
+  EXPECT_EQ(check.status, 0) << check.output;
+  EXPECT_NE(check.output.find("glass_E+glass_Eavg average"), std::string::npos) << check.output;
+  EXPECT_NE(check.output.find("spec_E texels"), std::string::npos) << check.output;
+  fs::remove_all(dir);
+}
+
+TEST(GlassTables, HeaderHelpersCompileAndLookUp) {
+  const fs::path dir = test::Scratch("glass_header");
+  const test::CommandResult bake = Lutbake("bake --out " + dir.string() +
+                                           " --tables glass_E,spec_E --size 4 --eta-size 3 "
+                                           "--format header");
+  ASSERT_EQ(bake.status, 0) << bake.output;
+  std::ofstream(dir / "main.cpp")
+      << "#include <cmath>\n#include <cstdio>\n#include \"glass_E.h\"\n#include \"spec_E.h\"\n"
+         "int main() {\n  int fail = 0;\n  using namespace lutbake_luts;\n"
+         "  // At texel centres the lookup is the texel; the helpers are 1/E and 1 - E.\n"
+         "  for (std::size_t z = 0; z < glass_E_table::kDepth; ++z) {\n"
+         "    const float eta = float(glass_E_table::kZNodes[z]);\n"
+         "    const float e = lookup_glass_E(0.375f, 0.625f, eta);\n"
+         "    if (e != glass_E_table::kValues[(z * 4 + 2) * 4 + 1]) ++fail;\n"
+         "    if (std::fabs(energy_compensation_glass_E(0.375f, 0.625f, eta) * e - 1.0f) > "
+         "1e-6f) ++fail;\n"
+         "    const float s = lookup_spec_E(0.375f, 0.625f, eta);\n"
+         "    if (base_weight_spec_E(0.375f, 0.625f, eta) != 1.0f - s) ++fail;\n"
+         "    if (!(s >= 0.0f && s <= e)) ++fail;\n"
+         "  }\n  std::printf(\"%d failures\\n\", fail);\n  return fail == 0 ? 0 : 1;\n}\n";
+  LUTBAKE_EXPECT_COMPILES_AND_RUNS(dir, "c++17");
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace lutbake
