@@ -12,5 +12,6 @@ const TableDefinition &FresnelAverageTable();      // Favg.cpp
 const TableDefinition &SplitSumTable();            // dfg.cpp
 const TableDefinition &SheenAlbedoTable();         // sheen_E.cpp
 const TableDefinition &SheenAverageAlbedoTable();  // sheen_Eavg.cpp
+const TableDefinition &F82Table();                 // f82.cpp
 
 }  // namespace lutbake

@@ -9,8 +9,13 @@ namespace lutbake {
 
 const std::vector<const TableDefinition *> &AllTables() {
   static const std::vector<const TableDefinition *> tables = {
-      &DirectionalAlbedoTable(), &AverageAlbedoTable(), &FresnelAverageTable(),
-      &SplitSumTable(),          &SheenAlbedoTable(),   &SheenAverageAlbedoTable(),
+      &DirectionalAlbedoTable(),
+      &AverageAlbedoTable(),
+      &FresnelAverageTable(),
+      &SplitSumTable(),
+      &SheenAlbedoTable(),
+      &SheenAverageAlbedoTable(),
+      &F82Table(),
   };
   return tables;
 }
