@@ -55,6 +55,9 @@ class F82Term final : public MicrofacetTable {
     const double alpha = r * r;
     return EvaluateF82(*this, s, mu, alpha, PointSeed(SeedId(), mu, alpha, s.seed));
   }
+  std::string UnseenEventTerm() const override {
+    return "6^6/7^7 x 4.6 / N (visible normals; 4.6 / N for the other estimators)";
+  }
   ValueClaim Range(const BakeSettings &) const override {
     // 6^6 / 7^7 = 0.056652...: the maximum of (o.h) (1 - o.h)^6, times E <= 1.
     return {0.0, 46656.0 / 823543.0, false, "in [0, 6^6/7^7] (C <= 6^6/7^7 E)"};

@@ -162,6 +162,9 @@ bool VectorisedVisibleNormals(const BakeSettings &s) {
   return s.ndf == NdfKind::kGgx && StrategyOf(s.estimator) == SampleStrategy::kVisibleNormal;
 }
 
+// The maximum of c (1 - c)^6 over [0, 1], at c = 1/7: 6^6 / 7^7.
+constexpr double kF82MaxWeight = 46656.0 / 823543.0;
+
 // The F82 weight (o.h) (1 - o.h)^6 at o.h = c in [0, 1].
 double F82Weight(double c) {
   const double y = 1.0 - c, y2 = y * y;
@@ -233,8 +236,11 @@ PointValue EvaluateAlbedo(const TableDefinition &table, const BakeSettings &s, d
 
 // The F82 term C (table f82) at (mu_o, alpha): E's integrators with the
 // weight (o.h) (1 - o.h)^6 in place of Schlick's. The sampled estimators are
-// E's scalar ones (the GGX SIMD sampler computes A and B only); their weight
-// G2 / G1(o) (o.h) (1 - o.h)^6 lies in [0, 1] for visible normals, as E's.
+// E's scalar ones (the GGX SIMD sampler computes A and B only). For visible
+// normals the weight G2 / G1(o) (o.h) (1 - o.h)^6 lies in [0, 6^6 / 7^7]
+// (G2 <= G1(o), and the maximum of c (1 - c)^6 is at c = 1/7), so the
+// unseen-event term of the bound is 6^6 / 7^7 x 4.6 / N; the other
+// estimators keep E's 4.6 / N.
 PointValue EvaluateF82(const TableDefinition &table, const BakeSettings &s, double mu_o,
                        double alpha, uint64_t pointSeed) {
   CheckAlpha(alpha);
@@ -279,7 +285,8 @@ PointValue EvaluateF82(const TableDefinition &table, const BakeSettings &s, doub
           w[0][k] = a.weight * F82Weight(a.cosThetaD);
         }
       },
-      s.samples, SampleSeed(table.SeedId(), s, pointSeed), &out);
+      s.samples, SampleSeed(table.SeedId(), s, pointSeed), &out,
+      StrategyOf(s.estimator) == SampleStrategy::kVisibleNormal ? kF82MaxWeight : 1.0);
   if (sampled) return out;
   TexelResult q = panel();
   q.samples = out.samples;  // the rounds spent before switching still count
