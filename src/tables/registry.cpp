@@ -8,15 +8,13 @@
 namespace lutbake {
 
 const std::vector<const TableDefinition *> &AllTables() {
+  // clang-format off
   static const std::vector<const TableDefinition *> tables = {
-      &DirectionalAlbedoTable(),
-      &AverageAlbedoTable(),
-      &FresnelAverageTable(),
-      &SplitSumTable(),
-      &SheenAlbedoTable(),
-      &SheenAverageAlbedoTable(),
+      &DirectionalAlbedoTable(), &AverageAlbedoTable(), &FresnelAverageTable(),
+      &SplitSumTable(),          &SheenAlbedoTable(),   &SheenAverageAlbedoTable(),
       &F82Table(),
   };
+  // clang-format on
   return tables;
 }
 
