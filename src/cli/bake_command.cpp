@@ -36,6 +36,7 @@ SmithForm ParseSmith(const std::string &s) {
 FresnelModel ParseFresnel(const std::string &s) {
   if (s == "dielectric") return FresnelModel::kDielectric;
   if (s == "conductor") return FresnelModel::kConductor;
+  if (s == "f82") return FresnelModel::kF82;
   return FresnelModel::kSchlick;
 }
 
@@ -58,9 +59,10 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
   AddSheenOptions(app, o.sheenVisibility, o.sheenAlpha);
   app.add_option("--fresnel", o.fresnel,
                  "Fresnel model of the Favg table: schlick (axis F0 in [0,1]), dielectric (exact, "
-                 "axis eta in [1,3]), conductor (exact, axes eta in [0,4] x k in [0,10])")
+                 "axis eta in [1,3]), conductor (exact, axes eta in [0,4] x k in [0,10]), f82 (F82 "
+                 "tint, closed form, axes F0 in [0,1] x tint in [0,1])")
       ->capture_default_str()
-      ->check(OneOf({"schlick", "dielectric", "conductor"}));
+      ->check(OneOf({"schlick", "dielectric", "conductor", "f82"}));
   app.add_option("--size", o.size,
                  "Texels per axis for every table (default: 32 for E, Eavg, Favg; 128 for dfg)")
       ->type_name("N")

@@ -94,8 +94,13 @@ void SetupEvalCommand(CLI::App &app, EvalOptions &o) {
       ->check(RealList({0.0, 1.0, "comma-separated numbers in [0, 1]"}));
   app.add_option("--fresnel", o.fresnel, "Favg: the Fresnel model")
       ->capture_default_str()
-      ->check(OneOf({"schlick", "dielectric", "conductor"}));
-  app.add_option("--f0", o.f0, "Favg with --fresnel schlick: reflectance at normal incidence")
+      ->check(OneOf({"schlick", "dielectric", "conductor", "f82"}));
+  app.add_option("--f0", o.f0,
+                 "Favg with --fresnel schlick or f82: reflectance at normal incidence")
+      ->type_name("LIST")
+      ->check(RealList({0.0, 1.0, "comma-separated numbers in [0, 1]"}));
+  app.add_option("--tint", o.tint,
+                 "Favg with --fresnel f82: the F82 tint (F at mu = 1/7 over Schlick's there)")
       ->type_name("LIST")
       ->check(RealList({0.0, 1.0, "comma-separated numbers in [0, 1]"}));
   app.add_option("--eta", o.eta,
@@ -120,7 +125,9 @@ void SetupEvalCommand(CLI::App &app, EvalOptions &o) {
       "Examples:\n"
       "  lutbake eval --table E --mu 1e-7,0.5 --roughness 0,1e-4,0.3\n"
       "  lutbake eval --table dfg --mu 0 --roughness 0.5 --samples 65536 --json\n"
-      "  lutbake eval --table Favg --fresnel conductor --eta 0.2 --k 3,10");
+      "  lutbake eval --table Favg --fresnel conductor --eta 0.2 --k 3,10\n"
+      "  lutbake eval --table Favg --fresnel f82 --f0 0.9 --tint 0.8\n"
+      "  lutbake eval --table f82 --mu 0.5 --roughness 0.3");
 }
 
 int RunEval(const EvalOptions &o, CLI::App &app) {
@@ -148,11 +155,10 @@ int RunEval(const EvalOptions &o, CLI::App &app) {
 
   // The point options: which the table takes with these settings; the
   // others are refused rather than ignored.
-  const std::map<std::string, const std::string *> given = {{"mu", &o.mu},
-                                                            {"roughness", &o.perceptualRoughness},
-                                                            {"f0", &o.f0},
-                                                            {"eta", &o.eta},
-                                                            {"k", &o.k}};
+  const std::map<std::string, const std::string *> given = {
+      {"mu", &o.mu}, {"roughness", &o.perceptualRoughness},
+      {"f0", &o.f0}, {"eta", &o.eta},
+      {"k", &o.k},   {"tint", &o.tint}};
   const std::vector<PointCoordinate> coordinates = table.Coordinates(settings);
   const Metadata labels = table.PointLabels(settings);
   std::string variant;  // " --fresnel schlick"

@@ -14,7 +14,7 @@ struct EvalOptions {
   std::string table;
   std::string mu;  // comma-separated lists of points
   std::string perceptualRoughness;
-  std::string f0, eta, k;  // Favg parameters
+  std::string f0, eta, k, tint;  // Favg parameters
   std::string ndf = "ggx";
   std::string smith = "correlated";
   std::string fresnel = "schlick";

@@ -34,7 +34,7 @@ AlbedoSample SampleLight(const AlbedoEstimator &e, const Vec3 &o, double L_o, do
   const double d = e.ndf.D(h);
   const double w = cosine ? 0.25 * kPi * d * g2OverMuO / mu_i : 0.5 * kPi * d * g2OverMuO;
   const SchlickWeights fc = Schlick(oh);
-  return {w, fc.fc, fc.complement};
+  return {w, fc.fc, fc.complement, oh};
 }
 
 }  // namespace
@@ -48,7 +48,7 @@ AlbedoSample AlbedoEstimator::Sample(const Vec3 &o, double L_o, double u1, doubl
     if (mu_i <= 0.0 || oh <= 0.0) return {};
     const double w = SmithG2OverG1o(smith, mu_o, mu_i, L_o, ndf.MuLambda(mu_i));
     const SchlickWeights fc = Schlick(oh);
-    return {w, fc.fc, fc.complement};
+    return {w, fc.fc, fc.complement, oh};
   }
   if (strategy == SampleStrategy::kCosine || strategy == SampleStrategy::kUniform)
     return SampleLight(*this, o, L_o, u1, u2);
@@ -60,7 +60,7 @@ AlbedoSample AlbedoEstimator::Sample(const Vec3 &o, double L_o, double u1, doubl
   if (mu_i <= 0.0) return {};
   const double w = SmithG2OverMuO(smith, mu_o, mu_i, L_o, ndf.MuLambda(mu_i)) * oh / h.z;
   const SchlickWeights fc = Schlick(oh);
-  return {w, fc.fc, fc.complement};
+  return {w, fc.fc, fc.complement, oh};
 }
 
 }  // namespace lutbake

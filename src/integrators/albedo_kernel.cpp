@@ -29,9 +29,12 @@ namespace hn = hwy::HWY_NAMESPACE;
 // a2s2 = alpha^2 (1 - mu_i^2) (ggx.h), G2 / mu_o (smith.h) is
 //   correlated: 2 mu_i (root + mu_i) / (2 mu_i (root + mu_i) (mu_o + L_o) + mu_o a2s2),
 //   separable:  2 mu_i (root + mu_i) / ((mu_o + L_o) (2 mu_i (root + mu_i) + a2s2)).
-template <class D, class V = hn::Vec<D>>
+//
+// With kF82, also the F82 weight (o.h) (1 - o.h)^6 = oh y^6 into c, computed
+// after and apart from a and b, which are then the same bits as without it.
+template <bool kF82, class D, class V = hn::Vec<D>>
 HWY_INLINE void GgxSplitSumLanes(D d, const GgxSplitSumConstants &k, bool tail, V x, V sc, V weight,
-                                 V *a, V *b) {
+                                 V *a, V *b, V *c) {
   const V one = hn::Set(d, 1.0), two = hn::Set(d, 2.0), zero = hn::Zero(d);
   const V alpha = hn::Set(d, k.alpha), alpha2 = hn::Set(d, k.alpha * k.alpha);
   const V mu_o = hn::Set(d, k.mu_o), muL_o = hn::Set(d, k.mu_o + k.L_o);
@@ -68,19 +71,21 @@ HWY_INLINE void GgxSplitSumLanes(D d, const GgxSplitSumConstants &k, bool tail, 
       hn::Mul(oh, hn::Add(hn::Add(hn::Add(one, y), hn::Add(y2, hn::Mul(y2, y))), hn::Mul(y2, y2)));
   *a = hn::Mul(f, complement);
   *b = hn::Mul(f, fc);
+  if constexpr (kF82) *c = hn::Mul(f, hn::Mul(oh, hn::Mul(fc, y)));  // f oh y^6
 }
 
 // The partial sums: panel p goes into sum p mod 8 at every vector width.
 constexpr size_t kPartialSums = 8;
 
-void SumGgxSplitSumImpl(const GgxSplitSumConstants &k, bool tail, int ruleNodes,
+template <bool kF82>
+void SumGgxSplitSumLoop(const GgxSplitSumConstants &k, bool tail, int ruleNodes,
                         const double *ruleX, const double *ruleW, const Panels &panels,
-                        double sums[2]) {
+                        double *sums) {
   const hn::CappedTag<double, kPartialSums> d;
   using V = hn::Vec<decltype(d)>;
   const size_t lanes = hn::Lanes(d), parts = kPartialSums / lanes;
   // The partial sums live in memory (arrays of vectors are not portable).
-  double partA[kPartialSums] = {}, partB[kPartialSums] = {};
+  double partA[kPartialSums] = {}, partB[kPartialSums] = {}, partC[kPartialSums] = {};
   // Eight panels at a time, one per lane; their nodes one after the other.
   const auto block = [&](const double *from, const double *width, const double *sc,
                          const double *scale) {
@@ -89,15 +94,19 @@ void SumGgxSplitSumImpl(const GgxSplitSumConstants &k, bool tail, int ruleNodes,
       const V vfrom = hn::LoadU(d, from + o), vwidth = hn::LoadU(d, width + o);
       const V vsc = hn::LoadU(d, sc + o), vscale = hn::LoadU(d, scale + o);
       V sumA = hn::LoadU(d, partA + o), sumB = hn::LoadU(d, partB + o);
+      V sumC = hn::LoadU(d, partC + o);
       for (int i = 0; i < ruleNodes; ++i) {
-        V a, b;
+        V a, b, c;
         const V x = hn::Add(vfrom, hn::Mul(vwidth, hn::Set(d, ruleX[i])));
-        GgxSplitSumLanes(d, k, tail, x, vsc, hn::Mul(vscale, hn::Set(d, ruleW[i])), &a, &b);
+        GgxSplitSumLanes<kF82>(d, k, tail, x, vsc, hn::Mul(vscale, hn::Set(d, ruleW[i])), &a, &b,
+                               &c);
         sumA = hn::Add(sumA, a);
         sumB = hn::Add(sumB, b);
+        if constexpr (kF82) sumC = hn::Add(sumC, c);
       }
       hn::StoreU(sumA, d, partA + o);
       hn::StoreU(sumB, d, partB + o);
+      if constexpr (kF82) hn::StoreU(sumC, d, partC + o);
     }
   };
   size_t p = 0;
@@ -120,6 +129,21 @@ void SumGgxSplitSumImpl(const GgxSplitSumConstants &k, bool tail, int ruleNodes,
             ((partA[4] + partA[5]) + (partA[6] + partA[7]));
   sums[1] = ((partB[0] + partB[1]) + (partB[2] + partB[3])) +
             ((partB[4] + partB[5]) + (partB[6] + partB[7]));
+  if constexpr (kF82)
+    sums[2] = ((partC[0] + partC[1]) + (partC[2] + partC[3])) +
+              ((partC[4] + partC[5]) + (partC[6] + partC[7]));
+}
+
+void SumGgxSplitSumImpl(const GgxSplitSumConstants &k, bool tail, int ruleNodes,
+                        const double *ruleX, const double *ruleW, const Panels &panels,
+                        double sums[2]) {
+  SumGgxSplitSumLoop<false>(k, tail, ruleNodes, ruleX, ruleW, panels, sums);
+}
+
+void SumGgxSplitSumF82Impl(const GgxSplitSumConstants &k, bool tail, int ruleNodes,
+                           const double *ruleX, const double *ruleW, const Panels &panels,
+                           double sums[3]) {
+  SumGgxSplitSumLoop<true>(k, tail, ruleNodes, ruleX, ruleW, panels, sums);
 }
 
 }  // namespace HWY_NAMESPACE
@@ -130,11 +154,19 @@ HWY_AFTER_NAMESPACE();
 namespace lutbake::kernel {
 
 HWY_EXPORT(SumGgxSplitSumImpl);
+HWY_EXPORT(SumGgxSplitSumF82Impl);
 
 void SumGgxSplitSum(const GgxSplitSumConstants &constants, bool tail, int ruleNodes,
                     const double *ruleX, const double *ruleW, const Panels &panels,
                     double sums[2]) {
   HWY_DYNAMIC_DISPATCH(SumGgxSplitSumImpl)(constants, tail, ruleNodes, ruleX, ruleW, panels, sums);
+}
+
+void SumGgxSplitSumF82(const GgxSplitSumConstants &constants, bool tail, int ruleNodes,
+                       const double *ruleX, const double *ruleW, const Panels &panels,
+                       double sums[3]) {
+  HWY_DYNAMIC_DISPATCH(SumGgxSplitSumF82Impl)
+  (constants, tail, ruleNodes, ruleX, ruleW, panels, sums);
 }
 
 }  // namespace lutbake::kernel

@@ -49,4 +49,11 @@ struct Panels {
 void SumGgxSplitSum(const GgxSplitSumConstants &constants, bool tail, int ruleNodes,
                     const double *ruleX, const double *ruleW, const Panels &panels, double sums[2]);
 
+// The same sums[0] and sums[1], bit for bit, and the F82 term (table f82)
+//   sums[2] = sum weight f(x) (o.h) (1 - o.h)^6    (C).
+// (A separate entry point, so that E and dfg do not pay for C.)
+void SumGgxSplitSumF82(const GgxSplitSumConstants &constants, bool tail, int ruleNodes,
+                       const double *ruleX, const double *ruleW, const Panels &panels,
+                       double sums[3]);
+
 }  // namespace lutbake::kernel

@@ -286,9 +286,10 @@ void InnerPanels(const Setup &t, double sc, double outerWeight, Scratch *s) {
 
 // Beckmann's integrand one node at a time (erfc in Lambda has no vector
 // form here): the measure 2 t exp(-t^2) dt, T = alpha t.
-void SumBeckmann(const Setup &t, const GaussLegendreRule &rule, const PanelList &panels,
-                 double sums[2]) {
-  double A = 0.0, B = 0.0;
+// With f82, sums[2] gets the F82 term C (weight (o.h) (1 - o.h)^6) besides.
+void SumBeckmann(const Setup &t, const GaussLegendreRule &rule, const PanelList &panels, bool f82,
+                 double sums[3]) {
+  double A = 0.0, B = 0.0, C = 0.0;
   for (size_t p = 0; p < panels.n; ++p)
     for (int i = 0; i < rule.n; ++i) {
       const double x = panels.from[p] + panels.width[p] * rule.x[i], sc = panels.sc[p];
@@ -299,21 +300,25 @@ void SumBeckmann(const Setup &t, const GaussLegendreRule &rule, const PanelList 
       if (!(mu_i > 0.0 && q > 0.0)) continue;
       const double f = panels.scale[p] * rule.w[i] * 2.0 * x * std::exp(-x * x) * q *
                        SmithG2OverMuO(t.smith, t.mu_o, mu_i, t.L_o, t.ndf.MuLambda(mu_i));
-      const SchlickWeights fc = Schlick(q * std::sqrt(inv));
+      const double oh = q * std::sqrt(inv);
+      const SchlickWeights fc = Schlick(oh);
       A += f * fc.complement;
       B += f * fc.fc;
+      if (f82) C += f * (oh * (fc.fc * (1.0 - oh)));
     }
   sums[0] = A;
   sums[1] = B;
+  sums[2] = C;
 }
 
 struct Sums {
   double A = 0, B = 0;
+  double C = 0;  // the F82 term, with f82 only
   uint64_t evaluations = 0;
 };
 
-// The integrals at one level.
-Sums EvaluateLevel(const Setup &t, int level) {
+// The integrals at one level; with f82 also C.
+Sums EvaluateLevel(const Setup &t, int level, bool f82 = false) {
   Scratch &s = ThreadScratch();
   s.core.Clear();
   s.tail.Clear();
@@ -321,17 +326,19 @@ Sums EvaluateLevel(const Setup &t, int level) {
   for (size_t j = 0; j < outer.cosPhi.size(); ++j)
     InnerPanels(t, t.s_o * outer.cosPhi[j], outer.weight[j], &s);
   const GaussLegendreRule &inner = GaussLegendre(kLevels[level].inner);
-  double core[2] = {0.0, 0.0}, tail[2] = {0.0, 0.0};
+  double core[3] = {0.0, 0.0, 0.0}, tail[3] = {0.0, 0.0, 0.0};
   if (t.ndf.kind == NdfKind::kGgx) {
     const kernel::GgxSplitSumConstants constants{t.ndf.alpha, t.mu_o, t.L_o, t.smith};
-    kernel::SumGgxSplitSum(constants, false, inner.n, inner.x, inner.w, s.core.View(), core);
-    kernel::SumGgxSplitSum(constants, true, inner.n, inner.x, inner.w, s.tail.View(), tail);
+    const auto sum = f82 ? kernel::SumGgxSplitSumF82 : kernel::SumGgxSplitSum;
+    sum(constants, false, inner.n, inner.x, inner.w, s.core.View(), core);
+    sum(constants, true, inner.n, inner.x, inner.w, s.tail.View(), tail);
   } else {
-    SumBeckmann(t, inner, s.core, core);
+    SumBeckmann(t, inner, s.core, f82, core);
   }
   Sums sums;
   sums.A = core[0] + tail[0];
   sums.B = core[1] + tail[1];
+  sums.C = core[2] + tail[2];
   sums.evaluations = (s.core.n + s.tail.n) * static_cast<uint64_t>(inner.n);
   return sums;
 }
@@ -376,6 +383,32 @@ SplitSumQuadrature IntegrateSplitSumQuadrature(const Ndf &ndf, SmithForm smith, 
     result.A /= E;
     result.B /= E;
   }
+  return result;
+}
+
+F82Quadrature IntegrateF82Quadrature(const Ndf &ndf, SmithForm smith, double mu_o,
+                                     double tolerance) {
+  const Setup setup = MakeSetup(ndf, smith, mu_o, tolerance);
+  F82Quadrature result;
+  const int first = FirstLevel(ndf);
+  Sums previous = EvaluateLevel(setup, first, true);
+  result.evaluations = previous.evaluations;
+  for (int k = first + 1; k < kQuadratureLevels; ++k) {
+    const Sums current = EvaluateLevel(setup, k, true);
+    result.evaluations += current.evaluations;
+    result.C = current.C;
+    // The same floor as E's: C's integrand is E's times (o.h) (1 - o.h)^6
+    // <= 6^6 / 7^7 < 1, so the negligible parts of E bound those of C.
+    result.bound =
+        std::abs(current.C - previous.C) + kQuadratureBoundFloor + 3.0 * setup.negligibleMass;
+    result.level = k;
+    result.converged = result.bound <= tolerance;
+    if (result.converged) break;
+    previous = current;
+  }
+  // C >= 0 in exact arithmetic; a rounding below 0 is brought back (it is
+  // far inside the floor).
+  result.C = std::max(result.C, 0.0);
   return result;
 }
 

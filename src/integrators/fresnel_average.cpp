@@ -18,6 +18,10 @@ FresnelAverageResult SchlickFresnelAverage(double f0) {
   return {r.value, r.error};
 }
 
+FresnelAverageResult F82TintFresnelAverage(double f0, double tint) {
+  return {f0 * (20.0 / 21.0) + 1.0 / 21.0 - F82TintCoefficient(f0, tint) / 126.0, 0.0};
+}
+
 FresnelAverageResult ExactFresnelAverage(double eta, double k) {
   const auto integrand = [eta, k](double mu) { return 2.0 * mu * ExactFresnel(eta, k, mu); };
   if (k == 0.0 && eta < 1.0) {

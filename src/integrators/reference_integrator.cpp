@@ -23,9 +23,29 @@ struct InnerSetup {
   double s_o, c_o, L_o, cosPhi;
 };
 
+// The Fresnel-like weights of the split sum: A and B (Schlick's 1 - Fc, Fc).
+struct SplitSumWeights {
+  static constexpr int kChannels = 2;
+  std::array<double, 2> operator()(double w, double oh) const {
+    const SchlickWeights fc = Schlick(oh);
+    return {w * fc.complement, w * fc.fc};
+  }
+};
+
+// The F82 term C: (o.h) (1 - o.h)^6.
+struct F82Weight {
+  static constexpr int kChannels = 1;
+  std::array<double, 1> operator()(double w, double oh) const {
+    const double y = 1.0 - oh, y2 = y * y;
+    return {w * (oh * (y2 * y2 * y2))};
+  }
+};
+
 // Integrand of the inner integral at inner variable v (psi for GGX, t for
-// Beckmann), including the Jacobian d(xi)/dv: {A part, B part}.
-std::array<double, 2> InnerIntegrand(const Ndf &ndf, SmithForm smith, const InnerSetup &s,
+// Beckmann), including the Jacobian d(xi)/dv, times each of the weights:
+// {A part, B part} (SplitSumWeights) or {C part} (F82Weight).
+template <typename Weights, int N = Weights::kChannels>
+std::array<double, N> InnerIntegrand(const Ndf &ndf, SmithForm smith, const InnerSetup &s,
                                      double v) {
   double cosTheta, sinTheta, jacobian;
   if (ndf.kind == NdfKind::kGgx) {
@@ -42,12 +62,11 @@ std::array<double, 2> InnerIntegrand(const Ndf &ndf, SmithForm smith, const Inne
   }
   const double oh = s.s_o * sinTheta * s.cosPhi + s.c_o * cosTheta;
   const double mu_i = 2.0 * oh * cosTheta - s.c_o;
-  if (mu_i <= 0.0 || oh <= 0.0 || cosTheta <= 0.0) return {0.0, 0.0};
+  if (mu_i <= 0.0 || oh <= 0.0 || cosTheta <= 0.0) return {};
   // (o.h) / cos(theta) * G2 / mu_o, the integrand in xi.
   const double w =
       jacobian * (oh / cosTheta) * SmithG2OverMuO(smith, s.c_o, mu_i, s.L_o, ndf.MuLambda(mu_i));
-  const SchlickWeights fc = Schlick(oh);
-  return {w * fc.complement, w * fc.fc};
+  return Weights()(w, oh);
 }
 
 // Outer (azimuth) breaks. theta_max(phi) swings from about pi/2 to about 0
@@ -88,16 +107,18 @@ std::vector<double> InnerBreaks(double vMax) {
   return breaks;
 }
 
-// A and B together: they share every evaluation of D, G2 and the horizon.
-QuadratureResultN<2> IntegrateSplitSum(const Ndf &ndf, SmithForm smith, double mu_o,
+// A and B together (they share every evaluation of D, G2 and the horizon),
+// or C alone.
+template <typename Weights, int N = Weights::kChannels>
+QuadratureResultN<N> IntegrateSplitSum(const Ndf &ndf, SmithForm smith, double mu_o,
                                        double tolerance) {
   const double s_o = SafeSqrt((1.0 - mu_o) * (1.0 + mu_o));
   const double L_o = ndf.MuLambda(mu_o);
   const double innerTolerance = 0.1 * tolerance;
-  std::array<double, 2> worstInnerError{0.0, 0.0};
+  std::array<double, N> worstInnerError{};
   bool innerConverged = true;
   int innerEvaluations = 0;
-  const auto outer = [&](double phi) -> std::array<double, 2> {
+  const auto outer = [&](double phi) -> std::array<double, N> {
     const InnerSetup setup{s_o, mu_o, L_o, std::cos(phi)};
     // theta_max = (atan2(s_o cos(phi), c_o) + pi/2) / 2, written as one
     // atan2 of the vector turned by 90 degrees: the sum cancels when
@@ -113,17 +134,19 @@ QuadratureResultN<2> IntegrateSplitSum(const Ndf &ndf, SmithForm smith, double m
       const double s = std::sin(thetaMax);
       vMax = s < kBeckmannSlopeCut * c ? s / c : kBeckmannSlopeCut;
     }
-    if (!(vMax > 0.0)) return {0.0, 0.0};
-    const QuadratureResultN<2> inner =
-        IntegrateAdaptiveN<2>([&](double v) { return InnerIntegrand(ndf, smith, setup, v); },
-                              InnerBreaks(vMax), innerTolerance);
-    for (int c = 0; c < 2; ++c) worstInnerError[c] = std::max(worstInnerError[c], inner.error[c]);
+    if (!(vMax > 0.0)) return {};
+    const QuadratureResultN<N> inner = IntegrateAdaptiveN<N>(
+        [&](double v) { return InnerIntegrand<Weights>(ndf, smith, setup, v); }, InnerBreaks(vMax),
+        innerTolerance);
+    for (int c = 0; c < N; ++c) worstInnerError[c] = std::max(worstInnerError[c], inner.error[c]);
     innerConverged = innerConverged && inner.converged;
     innerEvaluations += inner.evaluations;
-    return {inner.value[0] * kInvPi, inner.value[1] * kInvPi};
+    std::array<double, N> value;
+    for (int c = 0; c < N; ++c) value[c] = inner.value[c] * kInvPi;
+    return value;
   };
-  QuadratureResultN<2> total = IntegrateAdaptiveN<2>(outer, OuterBreaks(mu_o), tolerance);
-  for (int c = 0; c < 2; ++c) total.error[c] += worstInnerError[c];
+  QuadratureResultN<N> total = IntegrateAdaptiveN<N>(outer, OuterBreaks(mu_o), tolerance);
+  for (int c = 0; c < N; ++c) total.error[c] += worstInnerError[c];
   total.converged = total.converged && innerConverged;
   total.evaluations = innerEvaluations;
   return total;
@@ -149,13 +172,30 @@ ReferenceAlbedo IntegrateReferenceAlbedo(const Ndf &ndf, SmithForm smith, double
   // at grazing view and small alpha (mu_o = 1e-3, alpha = 1e-4) while A and
   // B, whose integrands split E's into a small and a large part, each agree
   // with independent values to 1e-13.
-  const QuadratureResultN<2> ab = IntegrateSplitSum(ndf, smith, mu_o, tolerance);
+  const QuadratureResultN<2> ab = IntegrateSplitSum<SplitSumWeights>(ndf, smith, mu_o, tolerance);
   result.A = ab.value[0];
   result.B = ab.value[1];
   result.E = ab.value[0] + ab.value[1];
   result.error = ab.error[0] + ab.error[1];
   result.evaluations = ab.evaluations;
   result.converged = ab.converged;
+  return result;
+}
+
+ReferenceF82 IntegrateReferenceF82(const Ndf &ndf, SmithForm smith, double mu_o, double tolerance) {
+  ReferenceF82 result;
+  if (ndf.alpha == 0.0) {
+    // A mirror: o.h = mu_o and G2 = 1, so C = mu_o (1 - mu_o)^6. Exact.
+    const double y = 1.0 - mu_o, y2 = y * y;
+    result.C = mu_o * (y2 * y2 * y2);
+    result.converged = true;
+    return result;
+  }
+  const QuadratureResultN<1> c = IntegrateSplitSum<F82Weight>(ndf, smith, mu_o, tolerance);
+  result.C = c.value[0];
+  result.error = c.error[0];
+  result.evaluations = c.evaluations;
+  result.converged = c.converged;
   return result;
 }
 

@@ -5,8 +5,10 @@
 //   schlick     x = F0 in [0, 1]; exactly 20/21 F0 + 1/21 (check asserts it)
 //   dielectric  x = eta in [1, 3]
 //   conductor   x = eta in [0, 4], y = k in [0, 10]
+//   f82         x = F0 in [0, 1], y = F82 tint in [0, 1]; in closed form,
+//               20/21 F0 + 1/21 - a / 126 (fresnel_average.h), per channel
 // 32 texels per axis by default. Integrated by adaptive Gauss-Kronrod over
-// mu (integrators/fresnel_average.h), never sampled.
+// mu (integrators/fresnel_average.h), never sampled; f82 is the closed form.
 #include <cmath>
 
 #include "lutbake/integrators/fresnel_average.h"
@@ -21,11 +23,13 @@ PointValue EvaluateFresnelAverage(FresnelModel model, double x, double y) {
     case FresnelModel::kSchlick: r = SchlickFresnelAverage(x); break;
     case FresnelModel::kDielectric: r = ExactFresnelAverage(x, 0.0); break;
     case FresnelModel::kConductor: r = ExactFresnelAverage(x, y); break;
+    case FresnelModel::kF82: r = F82TintFresnelAverage(x, y); break;
   }
   PointValue out;
   out.value[0] = r.value;
   out.error[0] = r.error;
   out.quadrature = true;
+  out.exact = model == FresnelModel::kF82;  // the closed form, error 0
   return out;
 }
 
@@ -62,10 +66,13 @@ class FresnelAverage final : public TableDefinition {
         k.required = false;
         return {eta, k};
       }
+      case FresnelModel::kF82:
+        return {Coordinate("f0", 0.0, 1.0, "comma-separated numbers in [0, 1]"),
+                Coordinate("tint", 0.0, 1.0, "comma-separated numbers in [0, 1]")};
     }
     return {};
   }
-  std::vector<std::string> CoordinateOptions() const override { return {"f0", "eta", "k"}; }
+  std::vector<std::string> CoordinateOptions() const override { return {"f0", "eta", "k", "tint"}; }
 
   std::vector<std::string> ModelOptions() const override { return {"fresnel"}; }
   Metadata ModelMetadata(const BakeSettings &s) const override {
@@ -90,6 +97,9 @@ class FresnelAverage final : public TableDefinition {
     else if (fresnel == "conductor" && table.x.name == "eta" && table.y.name == "k" &&
              table.x.min >= 0.0 && table.y.min >= 0.0)
       s->fresnel = FresnelModel::kConductor;
+    else if (fresnel == "f82" && table.x.name == "F0" && table.y.name == "tint" &&
+             table.x.min >= 0.0 && table.x.max <= 1.0 && table.y.min >= 0.0 && table.y.max <= 1.0)
+      s->fresnel = FresnelModel::kF82;
     else {
       problems->push_back("fresnel '" + fresnel + "' with axes " + table.x.name + ", " +
                           (table.y.name.empty() ? "none" : table.y.name) +
@@ -128,18 +138,42 @@ class FresnelAverage final : public TableDefinition {
             "conductor F_avg is not monotonic in k for small eta (eta 0.1: it falls as k grows "
             "from 0), so nothing is claimed";
         break;
+      case FresnelModel::kF82:
+        // dF_avg/dF0 = 20/21 - (1 - tint) (1 - (6/7)^5) 7^7 / (126 6^6)
+        // >= 20/21 - 0.0753 > 0.
+        claim.direction = +1;
+        claim.claim = "F82 F_avg increasing in F0 at every tint";
+        break;
     }
     return claim;
   }
   std::optional<ClosedForm> Closed(const BakeSettings &s) const override {
+    if (s.fresnel == FresnelModel::kF82)
+      return ClosedForm{"F82-tint F_avg", "20/21 F0 + 1/21 - a / 126", [](double f0, double tint) {
+                          return F82TintFresnelAverage(f0, tint).value;
+                        }};
     if (s.fresnel != FresnelModel::kSchlick) return {};
     return ClosedForm{"Schlick F_avg", "20/21 F0 + 1/21",
                       [](double f0, double) { return f0 * (20.0 / 21.0) + 1.0 / 21.0; }};
+  }
+  ValueClaim Range(const BakeSettings &s) const override {
+    if (s.fresnel == FresnelModel::kF82)
+      return {-13.0 / 756.0, 1.0, false,
+              "in [-13/756, 1] (the unclamped F82 Fresnel dips below 0 for small F0 and tint)"};
+    return {0.0, 1.0, false, "in [0, 1]"};
   }
 
   PlanRole Role() const override { return PlanRole::kFresnelAverage; }
   HeaderText Header(const Table &table) const override {
     HeaderText text;
+    if (table.y.name == "tint") {
+      text.notes.push_back(
+          "F82-tint Fresnel, per colour channel: F(mu) = F0 + (1 - F0) (1 - mu)^5 "
+          "- a mu (1 - mu)^6,");
+      text.notes.push_back(
+          "a = Schlick(F0, 1/7) (1 - tint) 7^7 / 6^6; F_avg = 20/21 F0 + 1/21 - "
+          "a / 126 (unclamped).");
+    }
     text.lookupComment = "Average Fresnel F_avg at the Fresnel parameter(s) " + table.x.name +
                          (table.is2D() ? " and " + table.y.name : std::string()) + ".";
     return text;

@@ -58,6 +58,11 @@ void FresnelAxes(FresnelModel model, int count, Axis *x, Axis *y) {
       *x = LinearAxis("eta", 0.0, 4.0, count);
       *y = LinearAxis("k", 0.0, 10.0, count);
       break;
+    // F82 tint: F0 and the tint, both reflectances in [0, 1].
+    case FresnelModel::kF82:
+      *x = LinearAxis("F0", 0.0, 1.0, count);
+      *y = LinearAxis("tint", 0.0, 1.0, count);
+      break;
   }
 }
 

@@ -10,6 +10,7 @@ const TableDefinition &DirectionalAlbedoTable();      // E.cpp
 const TableDefinition &AverageAlbedoTable();          // Eavg.cpp
 const TableDefinition &FresnelAverageTable();         // Favg.cpp
 const TableDefinition &SplitSumTable();               // dfg.cpp
+const TableDefinition &F82Table();                    // f82.cpp
 const TableDefinition &SheenAlbedoTable();            // sheen_E.cpp
 const TableDefinition &SheenAverageAlbedoTable();     // sheen_Eavg.cpp
 const TableDefinition &GlassAlbedoTable();            // glass_E.cpp

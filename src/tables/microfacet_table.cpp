@@ -162,6 +162,15 @@ bool VectorisedVisibleNormals(const BakeSettings &s) {
   return s.ndf == NdfKind::kGgx && StrategyOf(s.estimator) == SampleStrategy::kVisibleNormal;
 }
 
+// The maximum of c (1 - c)^6 over [0, 1], at c = 1/7: 6^6 / 7^7.
+constexpr double kF82MaxWeight = 46656.0 / 823543.0;
+
+// The F82 weight (o.h) (1 - o.h)^6 at o.h = c in [0, 1].
+double F82Weight(double c) {
+  const double y = 1.0 - c, y2 = y * y;
+  return c * (y2 * y2 * y2);
+}
+
 void CheckAlpha(double alpha) {
   // Written so that NaN fails too.
   if (!(alpha == 0.0 || (alpha >= kMinimumAlpha && alpha <= 1.0)))
@@ -221,6 +230,65 @@ PointValue EvaluateAlbedo(const TableDefinition &table, const BakeSettings &s, d
   }
   if (sampled) return out;
   TexelResult q = PanelAlbedo(split, s, ndf, mu_o);
+  q.samples = out.samples;  // the rounds spent before switching still count
+  return q;
+}
+
+// The F82 term C (table f82) at (mu_o, alpha): E's integrators with the
+// weight (o.h) (1 - o.h)^6 in place of Schlick's. The sampled estimators are
+// E's scalar ones (the GGX SIMD sampler computes A and B only). For visible
+// normals the weight G2 / G1(o) (o.h) (1 - o.h)^6 lies in [0, 6^6 / 7^7]
+// (G2 <= G1(o), and the maximum of c (1 - c)^6 is at c = 1/7), so the
+// unseen-event term of the bound is 6^6 / 7^7 x 4.6 / N; the other
+// estimators keep E's 4.6 / N.
+PointValue EvaluateF82(const TableDefinition &table, const BakeSettings &s, double mu_o,
+                       double alpha, uint64_t pointSeed) {
+  CheckAlpha(alpha);
+  if (!(mu_o >= 0.0 && mu_o <= 1.0))
+    throw std::domain_error("mu " + FormatDouble(mu_o) + " is outside [0, 1]");
+  const Ndf ndf{s.ndf, alpha};
+  const auto panel = [&] {
+    const F82Quadrature q = IntegrateF82Quadrature(ndf, s.smith, mu_o, PanelTolerance(s));
+    TexelResult out;
+    out.value[0] = q.C;
+    out.error[0] = q.bound;
+    out.evaluations = q.evaluations;
+    out.quadrature = true;
+    return out;
+  };
+  if (alpha == 0.0) {
+    // The mirror: o.h = mu_o, G2 = 1, C = mu_o (1 - mu_o)^6, exact.
+    TexelResult out;
+    out.value[0] = F82Weight(mu_o);
+    out.quadrature = out.exact = true;
+    return out;
+  }
+  if (s.estimator == Estimator::kQuadrature) return panel();
+  if (s.estimator == Estimator::kAdaptiveQuadrature) {
+    const ReferenceF82 r = IntegrateReferenceF82(ndf, s.smith, mu_o, AdaptiveTolerance(s));
+    TexelResult out;
+    out.value[0] = r.C;
+    out.error[0] = kQuadratureErrorFactor * r.error + kQuadratureErrorFloor;
+    out.evaluations = static_cast<uint64_t>(r.evaluations);
+    out.quadrature = true;
+    return out;
+  }
+  const AlbedoEstimator estimator{ndf, s.smith, StrategyOf(s.estimator)};
+  const Vec3 o = ViewDirection(mu_o);
+  const double L_o = ndf.MuLambda(mu_o);
+  TexelResult out;
+  const bool sampled = SampleTexel<2, 1>(
+      s,
+      [&](const PointView &p, double *w[]) {
+        for (size_t k = 0; k < p.n; ++k) {
+          const AlbedoSample a = estimator.Sample(o, L_o, p.u[0][k], p.u[1][k]);
+          w[0][k] = a.weight * F82Weight(a.cosThetaD);
+        }
+      },
+      s.samples, SampleSeed(table.SeedId(), s, pointSeed), &out,
+      StrategyOf(s.estimator) == SampleStrategy::kVisibleNormal ? kF82MaxWeight : 1.0);
+  if (sampled) return out;
+  TexelResult q = panel();
   q.samples = out.samples;  // the rounds spent before switching still count
   return q;
 }

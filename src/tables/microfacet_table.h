@@ -35,4 +35,9 @@ class MicrofacetTable : public TableDefinition {
   static void AddRoughnessNotes(HeaderText *text);
 };
 
+// The F82 term C(mu_o, alpha) of table f82 (f82.cpp), with the settings'
+// estimator; conventions and errors as EvaluateAlbedo's (bake.h).
+PointValue EvaluateF82(const TableDefinition &table, const BakeSettings &settings, double mu_o,
+                       double alpha, uint64_t pointSeed);
+
 }  // namespace lutbake

@@ -8,13 +8,21 @@
 namespace lutbake {
 
 const std::vector<const TableDefinition *> &AllTables() {
+  // clang-format off
   static const std::vector<const TableDefinition *> tables = {
-      &DirectionalAlbedoTable(), &AverageAlbedoTable(),
-      &FresnelAverageTable(),    &SplitSumTable(),
-      &SheenAlbedoTable(),       &SheenAverageAlbedoTable(),
-      &GlassAlbedoTable(),       &GlassAverageAlbedoTable(),
-      &SpecularAlbedoTable(),    &SpecularAverageAlbedoTable(),
+      &DirectionalAlbedoTable(),
+      &AverageAlbedoTable(),
+      &FresnelAverageTable(),
+      &SplitSumTable(),
+      &F82Table(),
+      &SheenAlbedoTable(),
+      &SheenAverageAlbedoTable(),
+      &GlassAlbedoTable(),
+      &GlassAverageAlbedoTable(),
+      &SpecularAlbedoTable(),
+      &SpecularAverageAlbedoTable(),
   };
+  // clang-format on
   return tables;
 }
 

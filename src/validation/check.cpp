@@ -142,6 +142,8 @@ class Checker {
         if (t.def->Relations().kullaConty) CheckFurnace(t.def->Relations().averageOf, t);
       for (auto &[index, t] : tables_)
         if (t.def->Relations().albedoScaling && t.usable) CheckAlbedoScaling(t);
+      for (auto &[index, t] : tables_)
+        if (!t.def->Relations().atMostTable.empty()) CheckAtMost(t);
     }
     report_.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -809,6 +811,51 @@ class Checker {
       Add(subject, "identity", CheckStatus::kPass,
           "A + B = E " + where + ": max |A + B - E| " + Short(worst) + " at " + Where(at), worst,
           0.0, at);
+  }
+
+  // value <= factor x (channel of the other table) at every shared texel,
+  // within the two stated bounds and float rounding (no interpolation: the
+  // tables must share their axes, else the check is skipped).
+  void CheckAtMost(const Loaded &small) {
+    const TableRelations rel = small.def->Relations();
+    const Loaded *big = Usable(rel.atMostTable);
+    if (!big || !small.usable) return;
+    const std::string subject = std::string(small.def->Name()) + "+" + rel.atMostTable + suffix_;
+    if (!SameModel(small, *big, subject, "at most")) return;
+    const Table &ts = small.table, &tb = big->table;
+    const auto same = [](const Axis &a, const Axis &b) {
+      return a.name == b.name && a.min == b.min && a.max == b.max && a.count == b.count &&
+             a.nodes == b.nodes;
+    };
+    const std::string claim = std::string(small.def->ChannelMeanings()[0]) +
+                              " <= " + Short(rel.atMostFactor) + " " +
+                              big->def->ChannelMeanings()[static_cast<size_t>(rel.atMostChannel)];
+    if (!same(ts.x, tb.x) || !same(ts.y, tb.y) || rel.atMostChannel >= tb.channels) {
+      Add(subject, "at most", CheckStatus::kSkipped,
+          claim + ": the tables do not share their texels (bake them at the same size)");
+      return;
+    }
+    double worstExcess = -1e300, worstValue = 0, worstAllowed = 0;
+    std::vector<std::pair<std::string, double>> at;
+    for (int y = 0; y < ts.height(); ++y)
+      for (int x = 0; x < ts.width(); ++x) {
+        const size_t i = ts.index(x, y, 0), j = tb.index(x, y, rel.atMostChannel);
+        const double excess = ts.values[i] - rel.atMostFactor * tb.values[j];
+        const double allowed = small.Bound(i) + rel.atMostFactor * big->Bound(j) +
+                               FloatRounding(ts.values[i]) + FloatRounding(tb.values[j]);
+        if (excess - allowed > worstExcess)
+          worstExcess = excess - allowed, worstValue = excess, worstAllowed = allowed,
+          at = At(ts, ts.x.TexelCenter(x), ts.y.TexelCenter(y));
+      }
+    const std::string where = "at " + std::to_string(ts.width() * ts.height()) + " shared texels";
+    if (worstExcess > 0.0)
+      Add(subject, "at most", CheckStatus::kFail,
+          claim + " fails " + where + ": exceeded by " + Short(worstValue) + " at " + Where(at) +
+              ", more than the " + Short(worstAllowed) + " the bounds allow",
+          worstValue, worstAllowed, at);
+    else
+      Add(subject, "at most", CheckStatus::kPass,
+          claim + " " + where + " (closest at " + Where(at) + ")", worstValue, worstAllowed, at);
   }
 
   // E_avg = 2 integral E mu dmu from E's rows, where E's rows and E_avg's

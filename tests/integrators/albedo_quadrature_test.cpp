@@ -199,6 +199,8 @@ std::vector<double> Sample() {
         const SplitSumQuadrature q =
             IntegrateSplitSumQuadrature(Ndf{NdfKind::kGgx, alpha}, smith, mu, 1e-9, true);
         values.insert(values.end(), {q.A, q.B, q.boundA, q.boundB});
+        const F82Quadrature c = IntegrateF82Quadrature(Ndf{NdfKind::kGgx, alpha}, smith, mu, 1e-9);
+        values.insert(values.end(), {c.C, c.bound});
       }
   return values;
 }
@@ -236,24 +238,31 @@ TEST(AlbedoQuadrature, KernelMatchesTheLibraryFormulas) {
     const double scale = 1.0;
     const double x = 0.5, w = 1.0;  // one node in the middle, weight 1
     const kernel::Panels panels{&from, &width, &sc, &scale, 1};
-    double sums[2];
+    double sums[2], withC[3];
     const double L_o = ggx::MuLambda(alpha, mu_o);
     kernel::SumGgxSplitSum({alpha, mu_o, L_o, smith}, tail, 1, &x, &w, panels, sums);
+    // The F82 entry point: A and B the same bits, and C besides.
+    kernel::SumGgxSplitSumF82({alpha, mu_o, L_o, smith}, tail, 1, &x, &w, panels, withC);
+    EXPECT_EQ(withC[0], sums[0]) << trial;
+    EXPECT_EQ(withC[1], sums[1]) << trial;
     // The same point by the library's own functions.
     const double at = from + width * x;
     const double T = tail ? alpha / at : alpha * at;
     const double q = sc * T + mu_o;
     const double mu_i = (2 * T * sc + mu_o * (1 - T * T)) / (1 + T * T);
-    double a = 0.0, b = 0.0;
+    double a = 0.0, b = 0.0, c = 0.0;
     if (mu_i > 0 && q > 0) {
       const double f = scale * w * 2 * at / Sqr(1 + at * at) * (tail ? q : q) *
                        SmithG2OverMuO(smith, mu_o, mu_i, L_o, ggx::MuLambda(alpha, mu_i));
       const SchlickWeights fc = Schlick(q / std::sqrt(1 + T * T));
       a = f * fc.complement;
       b = f * fc.fc;
+      const double oh = q / std::sqrt(1 + T * T);
+      c = f * oh * std::pow(1 - oh, 6);
     }
     EXPECT_NEAR(sums[0], a, 1e-12 * std::abs(a) + 1e-300) << trial;
     EXPECT_NEAR(sums[1], b, 1e-12 * std::abs(b) + 1e-300) << trial;
+    EXPECT_NEAR(withC[2], c, 1e-12 * std::abs(c) + 1e-300) << trial;
   }
 }
 

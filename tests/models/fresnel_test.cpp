@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "lutbake/integrators/fresnel_average.h"
 #include "support/csv.h"
 
@@ -47,6 +49,24 @@ TEST(Fresnel, ExactFresnelLimits) {
   const double eta = 1.5;
   EXPECT_NEAR(1.0 - ExactFresnelAverage(1.0 / eta, 0.0).value,
               (1.0 - ExactFresnelAverage(eta, 0.0).value) / (eta * eta), 1e-13);
+}
+
+// The F82-tint Fresnel: F(1) = F0, F(0) = 1 (Schlick's ends, the bump
+// mu (1 - mu)^6 vanishes at both), F(1/7) = tint Schlick(F0, 1/7) (what a is
+// chosen for), and tint = 1 is Schlick's.
+TEST(Fresnel, F82TintLimits) {
+  for (double f0 : {0.0, 0.04, 0.56, 0.95, 1.0})
+    for (double tint : {0.0, 0.25, 0.7, 1.0}) {
+      EXPECT_EQ(F82TintFresnel(f0, tint, 1.0), f0);
+      EXPECT_DOUBLE_EQ(F82TintFresnel(f0, tint, 0.0), 1.0);
+      const double schlickBar = f0 + (1.0 - f0) * std::pow(6.0 / 7.0, 5);
+      EXPECT_NEAR(F82TintFresnel(f0, tint, 1.0 / 7.0), tint * schlickBar, 1e-15) << f0 << tint;
+      for (double mu : {0.01, 0.3, 0.8})
+        EXPECT_NEAR(F82TintFresnel(f0, 1.0, mu), SchlickFresnel(f0, mu), 1e-16);
+    }
+  // a = Schlick(F0, 1/7) (1 - tint) / (mu_bar (1 - mu_bar)^6), here for F0 = 0.5, tint = 0.2.
+  EXPECT_NEAR(F82TintCoefficient(0.5, 0.2),
+              (0.5 + 0.5 * std::pow(6.0 / 7.0, 5)) * 0.8 / (std::pow(6.0 / 7.0, 6) / 7.0), 1e-14);
 }
 
 }  // namespace

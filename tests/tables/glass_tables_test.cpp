@@ -94,9 +94,11 @@ TEST(GlassTables, ExactLimits) {
 // as 1 - F_avg(eta) = eta^2 (1 - F_avg(1/eta)) does for a smooth interface.
 TEST(GlassTables, TransmittedAveragesAreReciprocal) {
   const TableDefinition &glass = TableNamed("glass_Eavg"), &spec = TableNamed("spec_Eavg");
-  const BakeSettings s;
-  for (double eta : {1.33, 1.5, 2.42})
-    for (double r : {0.0, 0.3, 0.8}) {
+  // At 1e-6: the averages on the inside (eta < 1) cost seconds at 1e-8.
+  BakeSettings s;
+  s.tolerance = 1e-6;
+  for (double eta : {1.5, 2.42})
+    for (double r : {0.0, 0.6}) {
       const PointValue g = glass.Evaluate(s, r, eta), sp = spec.Evaluate(s, r, eta);
       const PointValue gi = glass.Evaluate(s, r, 1 / eta), spi = spec.Evaluate(s, r, 1 / eta);
       const double outside = g.value[0] - sp.value[0], inside = gi.value[0] - spi.value[0];
@@ -107,6 +109,7 @@ TEST(GlassTables, TransmittedAveragesAreReciprocal) {
   // The smooth case against the Fresnel average itself.
   const FresnelAverageResult favg = ExactFresnelAverage(1.5, 0.0);
   EXPECT_NEAR(spec.Evaluate(s, 0.0, 1.5).value[0], favg.value, favg.error + 1e-12);
+  EXPECT_NEAR(glass.Evaluate(s, 0.0, 1 / 1.5).value[0], 1.0, 1e-12);
 }
 
 TEST(GlassTables, EvalTakesThreeCoordinates) {
@@ -137,25 +140,26 @@ TEST(GlassTables, EvalTakesThreeCoordinates) {
   }
 }
 
-// A small bake of all four in every format, then `lutbake check`: the 3D
-// files read back, every texel within its bound of the adaptive reference,
-// the averages against their tables' rows.
+// A small bake of the two 3D tables in every format, then `lutbake check`:
+// the 3D files read back and agree, every texel within its bound of the
+// adaptive reference, trilinear lookups at random points.
 TEST(GlassTables, SmallBakePassesCheck) {
   const fs::path dir = test::Scratch("glass_bake");
   const test::CommandResult bake =
       Lutbake("bake --out " + dir.string() +
-              " --tables glass_E,glass_Eavg,spec_E,spec_Eavg --size 8 --eta-size 3 --format "
+              " --tables glass_E,spec_E --size 4 --eta-size 2 --tolerance 1e-6 --format "
               "exr,bin,header --error-map");
   ASSERT_EQ(bake.status, 0) << bake.output;
   const Table exr = ReadExrTable((dir / "glass_E.exr").string());
   ASSERT_TRUE(exr.is3D());
-  EXPECT_EQ(exr.z.count, 9);  // 3 uniform in s (1/3, 1, 3) and 6 materials
+  EXPECT_EQ(exr.z.count, 9);  // 1/3 and 3 (s = -+1/2), eta = 1 and 6 materials
   const Table bin = ReadBinaryTable((dir / "glass_E.bin").string());
   ASSERT_EQ(bin.values.size(), exr.values.size());
   const test::CommandResult check = Lutbake("check " + dir.string());
   EXPECT_EQ(check.status, 0) << check.output;
-  EXPECT_NE(check.output.find("glass_E+glass_Eavg average"), std::string::npos) << check.output;
-  EXPECT_NE(check.output.find("spec_E texels"), std::string::npos) << check.output;
+  EXPECT_NE(check.output.find("glass_E texels"), std::string::npos) << check.output;
+  EXPECT_NE(check.output.find("spec_E points"), std::string::npos) << check.output;
+  EXPECT_NE(check.output.find("trilinear"), std::string::npos) << check.output;
   fs::remove_all(dir);
 }
 

@@ -40,6 +40,7 @@ struct AlbedoSample {
   double weight = 0.0;             // contribution to E
   double schlickWeight = 0.0;      // Fc = (1 - o.h)^5, so that B gets weight * Fc
   double schlickComplement = 0.0;  // 1 - Fc without cancellation: A gets weight * this
+  double cosThetaD = 0.0;          // o.h, for other Fresnel weights (f82: (o.h) (1 - o.h)^6)
 };
 
 struct AlbedoEstimator {

@@ -85,6 +85,21 @@ struct SplitSumQuadrature {
 SplitSumQuadrature IntegrateSplitSumQuadrature(const Ndf &ndf, SmithForm smith, double mu_o,
                                                double tolerance, bool split);
 
+struct F82Quadrature {
+  double C = 0, bound = 0;
+  uint64_t evaluations = 0;
+  int level = 0;
+  bool converged = false;
+};
+
+// The F82 term of table f82: the integrand of E above weighted by
+// (o.h) (1 - o.h)^6 instead of Schlick's (1 - o.h)^5, on the same panels and
+// levels (the weight is a polynomial in o.h, which is analytic wherever E's
+// integrand is). Bound |C_k - C_{k-1}| + 1e-10 + 3e-3 tolerance, as for B.
+// mu_o in [0, 1], alpha in (0, 1].
+F82Quadrature IntegrateF82Quadrature(const Ndf &ndf, SmithForm smith, double mu_o,
+                                     double tolerance);
+
 struct AverageQuadrature {
   double value = 0, bound = 0;
   uint64_t evaluations = 0;

@@ -16,4 +16,15 @@ struct FresnelAverageResult {
 FresnelAverageResult SchlickFresnelAverage(double f0);
 FresnelAverageResult ExactFresnelAverage(double eta, double k);
 
+// F_avg of the F82-tint Fresnel (models/fresnel.h) in closed form, error 0
+// (the value is that of a few correctly rounded operations):
+//   2 int_0^1 mu Schlick(F0, mu) dmu = F0 + (1 - F0) 2 B(2, 6) = 20/21 F0 + 1/21,
+//   2 int_0^1 mu mu (1 - mu)^6 dmu  = 2 B(3, 7) = 2 (2! 6! / 9!) = 1/126,
+// B the Beta function, B(p, q) = (p-1)! (q-1)! / (p+q-1)!, so
+//   F_avg = 20/21 F0 + 1/21 - a / 126,
+//   a = Schlick(F0, 1/7) (1 - tint) 7^7 / 6^6.
+// It is the average of the formula as written, unclamped: it lies in
+// [-13/756, 1] (-13/756 at F0 = tint = 0, where F itself dips below 0).
+FresnelAverageResult F82TintFresnelAverage(double f0, double tint);
+
 }  // namespace lutbake

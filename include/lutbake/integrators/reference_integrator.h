@@ -34,6 +34,19 @@ struct ReferenceAlbedo {
 ReferenceAlbedo IntegrateReferenceAlbedo(const Ndf &ndf, SmithForm smith, double mu_o,
                                          double tolerance = 1e-12);
 
+struct ReferenceF82 {
+  double C = 0;
+  double error = 0;  // error estimate of C
+  int evaluations = 0;
+  bool converged = false;
+};
+
+// The F82 term C = integral of f (o.h) (1 - o.h)^6 mu_i d omega_i (table
+// f82), F = 1 in f: the same integrand as E weighted by (o.h) (1 - o.h)^6,
+// integrated on its own (its adaptive refinement follows C's error).
+ReferenceF82 IntegrateReferenceF82(const Ndf &ndf, SmithForm smith, double mu_o,
+                                   double tolerance = 1e-12);
+
 struct ReferenceAverage {
   double value = 0;
   double error = 0;

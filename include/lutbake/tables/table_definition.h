@@ -91,6 +91,12 @@ struct TableRelations {
   // The albedo-scaling furnace of a layer over a white base (sheen):
   // layer + (1 - E(mu_o)) base reflects 1 + E - E_lookup.
   bool albedoScaling = false;
+  // Every value is at most atMostFactor times channel atMostChannel of table
+  // atMostTable at the same texel (f82: C <= B / 4 with dfg's B); checked
+  // where the two tables share their axes.
+  std::string atMostTable;
+  int atMostChannel = 0;
+  double atMostFactor = 1.0;
 };
 
 // Why a bake plan (plans/plan.h) needs a table.
