@@ -14,7 +14,7 @@ G = 1/(1 + Lambda(mu) + Lambda(|i.z|)) (correlated) or 1/((1 + Lambda(mu))(1 + L
 2007's BTDF in the form that integrates to the transmitted fraction of the energy (eta_far^2 in
 the numerator, no radiance factor); README.md has the derivation.
 
-Method (independent of lutbake's C++, which integrates over the light direction): the
+Method (no code shared with lutbake's C++, whose rule is written separately): the
 variable is the half vector h = (theta, phi); phi is folded onto [0, pi]. For fixed theta every
 factor of the integrand depends on phi only through c = A cos(phi) + B (A = sin(theta_o)
 sin(theta), B = mu cos(theta)), so the places where it is not analytic are levels of c:
