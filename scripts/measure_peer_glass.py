@@ -258,6 +258,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("peer")
     ap.add_argument("lutbake", nargs="?", default="-")
+    ap.add_argument("--averages", action="store_true",
+                    help="also the Eavg tables against lutbake's glass_Eavg (slow: minutes)")
     ap.add_argument("--reference-csv", action="append", default=[])
     ap.add_argument("--python", action="store_true")
     ap.add_argument("--stride", type=int, default=3)
@@ -303,6 +305,9 @@ def main():
                 continue    # exact definition only in python mode; eta = 1: s undefined (0/0)
             exact = None
             if not use_py:
+                if not (1.0 / 16.0 <= eta <= 16.0):
+                    log(f"{name} slice {iz} eta={eta:.6g}: outside lutbake's [1/16, 16], skipped")
+                    continue
                 exact = lutbake_eval(a.lutbake, "glass_E", mus, roughs, [eta])
             log(f"{name} slice {iz} eta={eta:.6g}")
             for ix, rough in zip(xs, roughs):
@@ -337,8 +342,8 @@ def main():
     if py:
         py.flush()
 
-    # -------- Eavg texels (lutbake only)
-    if not use_py:
+    # -------- Eavg texels (lutbake only; --averages: each eta < 1 average takes seconds)
+    if not use_py and a.averages:
         for name in ("ggx_glass_Eavg", "ggx_glass_inv_Eavg"):
             if name not in tables:
                 continue
@@ -348,6 +353,8 @@ def main():
             for iz in range(nz):
                 roughs = [texel_point(name, ix, 0, iz)[0] for ix in range(nx)]
                 eta = texel_point(name, 0, 0, iz)[2]
+                if not (1.0 / 16.0 <= eta <= 16.0):
+                    continue
                 ex = lutbake_eval(a.lutbake, "glass_Eavg", None, roughs, [eta])
                 for ix, rough in enumerate(roughs):
                     g, _ = ex[key_of(rough, None, eta)]
