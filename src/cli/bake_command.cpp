@@ -219,9 +219,12 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
     planMetadata.emplace_back("planSources", sources);
     for (const PlannedTable &t : plan.tables) {
       BakeJob job{t.definition, PlannedSettings(t, settings), t.x, t.y, t.name, planMetadata};
-      t.definition->DepthAxis(
-          job.settings, settings.depthSize > 0 ? settings.depthSize : t.definition->DefaultDepth(),
-          &job.z);
+      if (!t.z.name.empty())
+        job.z = t.z;  // the plan's IORs
+      else
+        t.definition->DepthAxis(
+            job.settings,
+            settings.depthSize > 0 ? settings.depthSize : t.definition->DefaultDepth(), &job.z);
       job.metadata.emplace_back("planMaterials", JoinNames(t.materials));
       jobs.push_back(job);
     }

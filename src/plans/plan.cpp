@@ -111,13 +111,26 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
   using Model = std::pair<NdfKind, SmithForm>;
   std::map<Model, Uses> compensated, ibl;
   std::map<FresnelModel, std::pair<Uses, Uses>> fresnel;  // eta, k
-  Uses sheen;  // sheen roughness of the materials with a sheen layer
+  Uses sheen;                  // sheen roughness of the materials with a sheen layer
+  Uses glass;                  // roughness of the compensated materials with transmission
+  std::set<double> glassEtas;  // their relative IORs, both sides
+  bool glassOff = false;       // a transmitting material without compensation
   int lit = 0, litSchlickCompensated = 0;
   for (const MaterialSpec &m : materials) {
     if (m.unlit) continue;
     for (const std::string &f : m.unsupported) plan.unsupported.push_back({m.name, f});
     for (const RoughnessUse &r : m.sheenRoughness)
       sheen.Add(r.min, r.max), sheen.AddMaterial(m.name);
+    if (!m.transmissionEta.empty()) {
+      if (options.compensation &&
+          m.compensation.value_or(options.defaultCompensation.value_or(true))) {
+        for (const RoughnessUse &r : m.transmissionRoughness) glass.Add(r.min, r.max);
+        glass.AddMaterial(m.name);
+        glassEtas.insert(m.transmissionEta.begin(), m.transmissionEta.end());
+      } else {
+        glassOff = true;
+      }
+    }
     if (m.roughness.empty()) continue;  // no specular lobe
     ++lit;
     const bool usesIbl = options.ibl && m.ibl.value_or(options.defaultIbl.value_or(true));
@@ -198,6 +211,17 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
     for (const TableDefinition *table : TablesFor(PlanRole::kSheenAlbedoScaling))
       roughnessTable(*table, Model{NdfKind::kGgx, SmithForm::kCorrelated}, sheen, false);
 
+  // Rough transmission: over the roughness used, and a listed eta axis at
+  // exactly the IORs used, both sides (the third axis of glass_E, the
+  // second of glass_Eavg).
+  if (!glass.materials.empty())
+    for (const TableDefinition *table : TablesFor(PlanRole::kGlassCompensation)) {
+      roughnessTable(*table, Model{NdfKind::kGgx, SmithForm::kCorrelated}, glass, false);
+      PlannedTable &t = plan.tables.back();
+      t.etas.assign(glassEtas.begin(), glassEtas.end());
+      (table->PlannedRoughnessAxis() == 1 ? t.z : t.y) = ListedAxis("eta", t.etas);
+    }
+
   // Why each table that is not planned is left out.
   const auto has = [&](PlanRole role) {
     for (const PlannedTable &t : plan.tables)
@@ -241,6 +265,12 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
   if (!has(PlanRole::kImageBasedLighting))
     omit(PlanRole::kImageBasedLighting,
          offReason(options.ibl, options.defaultIbl, "--no-ibl", "image-based lighting"));
+  if (!has(PlanRole::kGlassCompensation))
+    omit(PlanRole::kGlassCompensation,
+         !nothingLit.empty() && !glassOff ? nothingLit
+         : glassOff ? "energy compensation is off for every material with transmission"
+                    : "no material transmits (KHR_materials_transmission with a "
+                      "transmissionFactor above 0)");
   if (!has(PlanRole::kSheenAlbedoScaling))
     omit(PlanRole::kSheenAlbedoScaling,
          !nothingLit.empty() ? nothingLit
@@ -283,6 +313,11 @@ std::string PlanJson(const BakePlan &plan) {
       if (t.fresnel == FresnelModel::kConductor) j["k"] = CoveredJson(t.k);
     } else if (t.definition->Role() == PlanRole::kSheenAlbedoScaling) {
       j["sheenRoughness"] = CoveredJson(t.roughness);
+    } else if (t.definition->Role() == PlanRole::kGlassCompensation) {
+      j["ndf"] = ToString(t.ndf);
+      j["smith"] = ToString(t.smith);
+      j["roughness"] = CoveredJson(t.roughness);
+      j["eta"] = t.etas;
     } else {
       j["ndf"] = ToString(t.ndf);
       j["smith"] = ToString(t.smith);
@@ -290,7 +325,12 @@ std::string PlanJson(const BakePlan &plan) {
     }
     j["axisX"] = DescribeAxis(t.x);
     j["axisY"] = t.y.name.empty() ? "none (1D table)" : DescribeAxis(t.y);
-    j["size"] = {t.x.count, t.y.count};
+    if (!t.z.name.empty()) {
+      j["axisZ"] = DescribeAxis(t.z);
+      j["size"] = {t.x.count, t.y.count, t.z.count};
+    } else {
+      j["size"] = {t.x.count, t.y.count};
+    }
     j["materials"] = t.materials;
     out["tables"].push_back(j);
   }
@@ -353,6 +393,7 @@ std::string DescribePlan(const BakePlan &plan) {
   for (const PlannedTable &t : plan.tables) {
     s << "  " << t.name << "  " << t.x.count;
     if (!t.y.name.empty()) s << " x " << t.y.count;
+    if (!t.z.name.empty()) s << " x " << t.z.count;
     s << "  (";
     if (t.definition->Role() == PlanRole::kFresnelAverage)
       s << ToString(t.fresnel);
@@ -362,6 +403,7 @@ std::string DescribePlan(const BakePlan &plan) {
       s << ToString(t.ndf) << ", " << ToString(t.smith);
     s << ")\n    " << ShortAxis(t.x);
     if (!t.y.name.empty()) s << "\n    " << ShortAxis(t.y);
+    if (!t.z.name.empty()) s << "\n    " << ShortAxis(t.z);
     s << "\n    for " << JoinNames(t.materials) << "\n";
   }
   if (!plan.omitted.empty()) s << "left out:\n";

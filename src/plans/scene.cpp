@@ -81,8 +81,6 @@ struct Extension {
 
 // Extensions whose lobes need tables lutbake does not bake.
 constexpr Extension kUnsupported[] = {
-    {"KHR_materials_transmission", "transmissionFactor", "transmissionTexture", 0.0},
-    {"KHR_materials_volume", "thicknessFactor", "thicknessTexture", 0.0},
     {"KHR_materials_anisotropy", "anisotropyStrength", "anisotropyTexture", 0.0},
     {"KHR_materials_iridescence", "iridescenceFactor", "iridescenceTexture", 0.0},
 };
@@ -197,6 +195,40 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
       const double r = SnapToMirror(roughnessFactor, out, "roughnessFactor");
       out.roughness.push_back({"base", roughnessTexture ? 0.0 : r, r});
     }
+    // KHR_materials_transmission: the base lobe also refracts, through an
+    // interface of relative IOR ior entering and 1 / ior leaving (a volume
+    // or a thin wall, light crosses both), with the base roughness; its
+    // texture multiplies transmissionFactor, so factor 0 is off.
+    if (const Json *tr = ext("KHR_materials_transmission")) {
+      const Place at = extPlace.Child("KHR_materials_transmission");
+      json_input::RequireObject(*tr, at);
+      const double factor = Factor(*tr, "transmissionFactor", at, 0.0);
+      const bool texture = Texture(*tr, "transmissionTexture", at);
+      if (factor <= 0.0) {
+        out.notes.push_back(std::string("KHR_materials_transmission with transmissionFactor 0") +
+                            (texture ? " (the texture multiplies it)" : "") +
+                            ": no transmission lobe");
+      } else if (ior == 0.0) {
+        out.notes.push_back(
+            "KHR_materials_transmission with KHR_materials_ior ior 0 (F0 = 1): every facet "
+            "reflects, nothing is transmitted");
+      } else {
+        const double r = SnapToMirror(roughnessFactor, out, "roughnessFactor");
+        out.transmissionRoughness.push_back({"transmission", roughnessTexture ? 0.0 : r, r});
+        out.transmissionEta.push_back(1.0 / ior);
+        if (ior != 1.0) out.transmissionEta.push_back(ior);
+      }
+    }
+    if (const Json *volume = ext("KHR_materials_volume")) {
+      const Place at = extPlace.Child("KHR_materials_volume");
+      json_input::RequireObject(*volume, at);
+      const double thickness = Factor(*volume, "thicknessFactor", at, 0.0, 0.0, 1e30);
+      Texture(*volume, "thicknessTexture", at);
+      out.notes.push_back(thickness > 0.0
+                              ? "KHR_materials_volume: light crosses the interface both ways "
+                                "(glass_E at ior and 1 / ior); its absorption needs no table"
+                              : "KHR_materials_volume with thicknessFactor 0: a thin wall");
+    }
   }
 
   if (const Json *coat = ext("KHR_materials_clearcoat")) {
@@ -256,7 +288,8 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
       const std::string &key = it.key();
       bool known = key == "KHR_materials_unlit" || key == "KHR_materials_ior" ||
                    key == "KHR_materials_specular" || key == "KHR_materials_clearcoat" ||
-                   key == "KHR_materials_pbrSpecularGlossiness" || key == "KHR_materials_sheen";
+                   key == "KHR_materials_pbrSpecularGlossiness" || key == "KHR_materials_sheen" ||
+                   key == "KHR_materials_transmission" || key == "KHR_materials_volume";
       for (const Extension &e : kUnsupported) known = known || key == e.name;
       bool harmless = false;
       for (const char *h : kHarmless) harmless = harmless || key == h;

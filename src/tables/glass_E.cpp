@@ -39,6 +39,7 @@ class GlassAlbedo final : public DielectricTable {
   std::vector<PointCoordinate> Coordinates(const BakeSettings &) const override {
     return {MuCoordinate(), RoughnessCoordinate(), EtaCoordinate()};
   }
+  PlanRole Role() const override { return PlanRole::kGlassCompensation; }
   int PlannedRoughnessAxis() const override { return 1; }
   PointValue Evaluate(const BakeSettings &s, double mu, double r) const override {
     return Evaluate3D(s, mu, r, 1.0);

@@ -31,6 +31,7 @@ class GlassAverageAlbedo final : public DielectricTable {
   std::vector<PointCoordinate> Coordinates(const BakeSettings &) const override {
     return {RoughnessCoordinate(), EtaCoordinate()};
   }
+  PlanRole Role() const override { return PlanRole::kGlassCompensation; }
   int PlannedRoughnessAxis() const override { return 0; }
   PointValue Evaluate(const BakeSettings &s, double r, double eta) const override {
     return EvaluateAverage(s, r, eta);

@@ -69,6 +69,12 @@ struct MaterialSpec {
   // The sheen roughness (glTF KHR_materials_sheen's sheenRoughness, layer
   // "sheen") of a material with a sheen; empty without one.
   std::vector<RoughnessUse> sheenRoughness;
+  // The relative IORs of a transmitting material's interface (glTF's
+  // KHR_materials_transmission: its IOR from KHR_materials_ior, 1.5 by
+  // default), both sides: ior entering, 1 / ior leaving. Empty without
+  // transmission. Its roughness is the base layer's (transmissionRoughness).
+  std::vector<double> transmissionEta;
+  std::vector<RoughnessUse> transmissionRoughness;
   // Per-material lighting; unset means "as the manifest or command line says".
   std::optional<bool> ibl;
   std::optional<bool> compensation;

@@ -27,7 +27,11 @@
 //     the height-correlated Smith term get a suffix: E_beckmann,
 //     E_separable, E_beckmann_separable; Favg_dielectric and Favg_conductor
 //     when both appear.
-//   - Features lutbake does not bake (sheen, transmission, ...) are listed as
+//   - glass_E and glass_Eavg for materials with transmission, over their
+//     roughness and exactly the relative IORs they use, both sides (ior and
+//     1 / ior) as a listed eta axis: glass at 1.5 alone gets the two slices
+//     eta = 1.5 and 1/1.5, nothing between.
+//   - Features lutbake does not bake (volume absorption, ...) are listed as
 //     unsupported; the plan still holds the tables of those materials'
 //     other lobes.
 #pragma once
@@ -73,6 +77,8 @@ struct PlannedTable {
   CoveredRange roughness;                         // E, Eavg, dfg
   CoveredRange eta, k;                            // Favg (k: conductor only)
   Axis x, y;                                      // the axes it is baked on
+  Axis z = LinearAxis("", 0.0, 1.0, 1);           // a 3D table's third axis (glass_E: eta)
+  std::vector<double> etas;                       // glass: the relative IORs, both sides
   std::vector<std::string> materials;             // the materials that need it
 };
 

@@ -106,6 +106,7 @@ enum class PlanRole {
   kEnergyCompensation,  // Kulla-Conty multiple scattering (E, Eavg)
   kFresnelAverage,      // F_avg of compensated non-Schlick Fresnel (Favg)
   kSheenAlbedoScaling,  // KHR_materials_sheen's albedo scaling (sheen_E)
+  kGlassCompensation,   // energy compensation of rough transmission (glass_E, glass_Eavg)
 };
 
 // What a generated C++ header says about the table besides its axes.
