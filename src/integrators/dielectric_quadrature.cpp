@@ -8,6 +8,9 @@
 #include <limits>
 #include <stdexcept>
 #include <vector>
+#ifdef DSTATS
+#include <cstdio>
+#endif
 
 #include "lutbake/core/math.h"
 #include "lutbake/integrators/gauss_kronrod.h"
@@ -30,6 +33,14 @@ constexpr double kDifferenceFactor = 2.0;
 // 0.034, eta = 0.56: 1.1e-9); the share covers that with margin (2e-9 at
 // tolerance 1e-8) and keeps the bound reachable.
 constexpr double kToleranceShare = 0.2;
+// The share of the tolerance the outer panels' doubled differences may
+// take together.
+constexpr double kPanelShare = 0.5;
+// The outer panels are graded toward the azimuths where the inner structure
+// changes by this ratio (each panel keeps a quarter of the rest): with the
+// panels refined one by one, fewer and longer panels cost less than the
+// inner rule's ratio 2 (validated like the rest; see the header).
+constexpr double kOuterKeep = 0.25;
 constexpr double kMaxPanel = 0.5;         // in x, w, t and phi
 constexpr double kBeckmannCut = 7.0;      // t = T / alpha
 constexpr int kScanAzimuths = 1024;       // to find the outer kinks
@@ -69,6 +80,25 @@ struct Kink {
   bool sqBelow = false, sqAbove = false;
 };
 
+// At most: the mirror's horizon, two critical roots, two refracted
+// horizons and GGX's split.
+constexpr int kMaxKinks = 6;
+struct Kinks {
+  Kink k[kMaxKinks];
+  int n = 0;
+  void clear() { n = 0; }
+  void push_back(const Kink &x) { k[n++] = x; }
+  size_t size() const { return static_cast<size_t>(n); }
+  const Kink &operator[](size_t i) const { return k[i]; }
+  const Kink *begin() const { return k; }
+  const Kink *end() const { return k + n; }
+  // Insertion sort by T (a handful of entries).
+  void Sort() {
+    for (int i = 1; i < n; ++i)
+      for (int j = i; j > 0 && k[j].T < k[j - 1].T; --j) std::swap(k[j], k[j - 1]);
+  }
+};
+
 // dc/dT at T (c = (sc T + mu_o) / sqrt(1 + T^2)).
 double DcDT(double sc, double mu_o, double T) {
   const double q = 1.0 + T * T;
@@ -77,8 +107,7 @@ double DcDT(double sc, double mu_o, double T) {
 
 // The kinks of the inner integrand at one azimuth, sorted, all in (0, T_end),
 // and T_end itself (infinity when the facets stay visible to theta = pi/2).
-void InnerKinks(const Setup &s, double cosPhi, double sinPhi, std::vector<Kink> *kinks,
-                double *T_end) {
+void InnerKinks(const Setup &s, double cosPhi, double sinPhi, Kinks *kinks, double *T_end) {
   kinks->clear();
   const double sc = s.s_o * cosPhi, mu_o = s.mu_o;
   *T_end = sc < 0.0 ? (mu_o > 0.0 ? mu_o / (-sc) : 0.0) : std::numeric_limits<double>::infinity();
@@ -140,18 +169,19 @@ void InnerKinks(const Setup &s, double cosPhi, double sinPhi, std::vector<Kink> 
   }
   if (s.ndf.kind == NdfKind::kGgx && inside(s.ndf.alpha))
     kinks->push_back({s.ndf.alpha, kSplit, 0.0, 0.0});
-  std::sort(kinks->begin(), kinks->end(), [](const Kink &a, const Kink &b) { return a.T < b.T; });
+  kinks->Sort();
 }
 
 // The sequence of kink kinds at an azimuth: where it changes, the inner
 // integral is not analytic in phi.
-std::vector<int> Signature(const Setup &s, double phi) {
-  std::vector<Kink> kinks;
+// Packed 3 bits a kind, in order (at most kMaxKinks kinds).
+uint32_t Signature(const Setup &s, double phi) {
+  Kinks kinks;
   double T_end = 0.0;
   InnerKinks(s, std::cos(phi), std::sin(phi), &kinks, &T_end);
-  std::vector<int> out;
+  uint32_t out = 0;
   for (const Kink &k : kinks)
-    if (k.kind != kSplit) out.push_back(k.kind);
+    if (k.kind != kSplit) out = (out << 3) | static_cast<uint32_t>(k.kind);
   return out;
 }
 
@@ -165,14 +195,16 @@ struct Panel {
   int square = 0;  // +1: v = a + (b - a) u^2; -1: v = b - (b - a) u^2; 0: linear
 };
 
-// Panels from a to b graded geometrically (ratio 2) toward a until the one
-// next to a is at most delta long.
-void GradeToward(double a, double b, double delta, bool towardA, std::vector<Panel> *out) {
+// Panels from a to b graded geometrically toward a (each keeps the share
+// `keep` of what is left: ratio 1 / keep) until the one next to a is at
+// most delta long.
+void GradeToward(double a, double b, double delta, bool towardA, std::vector<Panel> *out,
+                 double keep = 0.5) {
   delta = std::max(delta, kSmallestScale * std::max(1.0, std::abs(a) + std::abs(b)));
   if (towardA) {
     double cur = b;
     while (cur - a > delta) {
-      const double mid = a + 0.5 * (cur - a);
+      const double mid = a + keep * (cur - a);
       out->push_back({mid, cur});
       cur = mid;
     }
@@ -180,7 +212,7 @@ void GradeToward(double a, double b, double delta, bool towardA, std::vector<Pan
   } else {
     double cur = a;
     while (b - cur > delta) {
-      const double mid = b - 0.5 * (b - cur);
+      const double mid = b - keep * (b - cur);
       out->push_back({cur, mid});
       cur = mid;
     }
@@ -193,21 +225,22 @@ void GradeToward(double a, double b, double delta, bool towardA, std::vector<Pan
 // longer than max(its start, nearSingular) (singularities at +-i nearSingular
 // about 0).
 void BuildPanels(const std::vector<Point> &points, double maxLength, double nearSingular,
-                 std::vector<Panel> *out) {
+                 std::vector<Panel> *out, double keep = 0.5) {
   for (size_t k = 0; k + 1 < points.size(); ++k) {
     const Point &p = points[k], &q = points[k + 1];
     if (!(q.v > p.v)) continue;
-    std::vector<Panel> graded;
+    thread_local std::vector<Panel> graded;
+    graded.clear();
     const bool gp = p.above > 0.0 && p.above < q.v - p.v;
     const bool gq = q.below > 0.0 && q.below < q.v - p.v;
     if (gp && gq) {
       const double mid = 0.5 * (p.v + q.v);
-      GradeToward(p.v, mid, p.above, true, &graded);
-      GradeToward(mid, q.v, q.below, false, &graded);
+      GradeToward(p.v, mid, p.above, true, &graded, keep);
+      GradeToward(mid, q.v, q.below, false, &graded, keep);
     } else if (gp) {
-      GradeToward(p.v, q.v, p.above, true, &graded);
+      GradeToward(p.v, q.v, p.above, true, &graded, keep);
     } else if (gq) {
-      GradeToward(p.v, q.v, q.below, false, &graded);
+      GradeToward(p.v, q.v, q.below, false, &graded, keep);
     } else if (p.sqAbove && q.sqBelow) {
       // Two square-root ends: one quadratic panel toward each.
       graded.push_back({p.v, 0.5 * (p.v + q.v)});
@@ -273,15 +306,18 @@ double NodeValue(const Setup &s, double sc, double cosTheta, double sinTheta,
 
 // The inner integral at one azimuth with n nodes per panel.
 double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *evaluations) {
-  std::vector<Kink> kinks;
+  Kinks kinks;
   double T_end = 0.0;
   InnerKinks(s, cosPhi, sinPhi, &kinks, &T_end);
   if (!(T_end > 0.0)) return 0.0;
   const double alpha = s.ndf.alpha, sc = s.s_o * cosPhi;
   const GaussLegendreRule &rule = GaussLegendre(n);
   double sum = 0.0;
-  std::vector<Point> points;
-  std::vector<Panel> panels;
+  // Reused across calls: no allocation per azimuth.
+  thread_local std::vector<Point> points;
+  thread_local std::vector<Panel> panels;
+  points.clear();
+  panels.clear();
   if (s.ndf.kind == NdfKind::kGgx) {
     // The core ends at T_s = alpha, or at a kink within a factor 2 of
     // alpha, which then becomes the end point of both variables with its
@@ -426,7 +462,7 @@ std::vector<Panel> OuterPanels(const Setup &s) {
   points.push_back({kPi, 0.0, 0.0});
   const double a = std::max(std::asinh(s.mu_o / s.s_o), kSmallestScale);
   points.push_back({0.5 * kPi, a, a});
-  std::vector<int> previous = Signature(s, 0.0);
+  uint32_t previous = Signature(s, 0.0);
   double previousPhi = 0.0;
   // For eta >= 1 the only kinks are T_r and the range's end T_c, with T_r <
   // T_c wherever T_c exists (mu_r = -mu_o < 0 at o.h = 0): the sequence never
@@ -434,7 +470,7 @@ std::vector<Panel> OuterPanels(const Setup &s) {
   const int scan = s.cc2 > 0.0 ? kScanAzimuths : 0;
   for (int j = 1; j <= scan; ++j) {
     const double phi = kPi * j / scan;
-    std::vector<int> current = Signature(s, phi);
+    const uint32_t current = Signature(s, phi);
     if (current != previous) {
       double lo = previousPhi, hi = phi;
       for (int it = 0; it < 60 && hi - lo > 1e-15; ++it) {
@@ -444,27 +480,30 @@ std::vector<Panel> OuterPanels(const Setup &s) {
       const double at = 0.5 * (lo + hi);
       if (std::abs(at - 0.5 * kPi) > 1e-12) points.push_back({at, s.azimuthScale, s.azimuthScale});
     }
-    previous = std::move(current);
+    previous = current;
     previousPhi = phi;
   }
   std::sort(points.begin(), points.end(), [](const Point &x, const Point &y) { return x.v < y.v; });
-  BuildPanels(points, kMaxPanel, 0.0, &panels);
+  BuildPanels(points, kMaxPanel, 0.0, &panels, kOuterKeep);
   return panels;
 }
 
-double AtLevel(const Setup &s, const std::vector<Panel> &outer, int level, uint64_t *evaluations) {
+// One outer panel at one level (without the 1/pi).
+double PanelAtLevel(const Setup &s, const Panel &p, int level, uint64_t *evaluations) {
   const int n = kNodes[level];
   const GaussLegendreRule &rule = GaussLegendre(n);
-  double sum = 0.0;
-  for (const Panel &p : outer) {
-    const double len = p.b - p.a;
-    double part = 0.0;
-    for (int j = 0; j < n; ++j) {
-      const double phi = p.a + len * rule.x[j];
-      part += rule.w[j] * Inner(s, std::cos(phi), std::sin(phi), n, evaluations);
-    }
-    sum += part * len;
+  const double len = p.b - p.a;
+  double part = 0.0;
+  for (int j = 0; j < n; ++j) {
+    const double phi = p.a + len * rule.x[j];
+    part += rule.w[j] * Inner(s, std::cos(phi), std::sin(phi), n, evaluations);
   }
+  return part * len;
+}
+
+double AtLevel(const Setup &s, const std::vector<Panel> &outer, int level, uint64_t *evaluations) {
+  double sum = 0.0;
+  for (const Panel &p : outer) sum += PanelAtLevel(s, p, level, evaluations);
   return sum * kInvPi;
 }
 
@@ -488,16 +527,51 @@ DielectricIntegral IntegrateDielectricAlbedo(NdfKind ndf, SmithForm smith, Diele
   }
   const Setup s = MakeSetup(ndf, smith, lobes, alpha, mu_o, eta, tolerance);
   const std::vector<Panel> outer = OuterPanels(s);
-  double previous = AtLevel(s, outer, 0, &out.evaluations);
-  for (int level = 1; level < kLevels; ++level) {
-    const double value = AtLevel(s, outer, level, &out.evaluations);
-    out.value = value;
-    out.bound = kDifferenceFactor * std::abs(value - previous) + kBoundFloor +
-                kToleranceShare * tolerance + CutBound(s);
-    out.converged = out.bound <= tolerance * std::max(1.0, std::abs(value));
-    if (out.converged) break;
-    previous = value;
+  // Every outer panel at levels 0 and 1; then the panel with the largest
+  // difference is taken a level further, until twice the sum of the
+  // panels' differences is within kPanelShare of the tolerance (or none can
+  // go further). The bound takes the sum of the differences, not the
+  // difference of the sums.
+  struct State {
+    double value, difference;
+    int level;
+  };
+  thread_local std::vector<State> states;
+  states.clear();
+  double differences = 0.0;
+  for (const Panel &p : outer) {
+    const double v0 = PanelAtLevel(s, p, 0, &out.evaluations) * kInvPi;
+    const double v1 = PanelAtLevel(s, p, 1, &out.evaluations) * kInvPi;
+    states.push_back({v1, std::abs(v1 - v0), 1});
+    differences += std::abs(v1 - v0);
   }
+  const double budget = kPanelShare * tolerance;
+  while (kDifferenceFactor * differences > budget) {
+    int worst = -1;
+    for (size_t k = 0; k < states.size(); ++k)
+      if (states[k].level + 1 < kLevels &&
+          (worst < 0 || states[k].difference > states[worst].difference))
+        worst = static_cast<int>(k);
+    if (worst < 0) break;
+    State &w = states[worst];
+    const double v = PanelAtLevel(s, outer[worst], w.level + 1, &out.evaluations) * kInvPi;
+    differences -= w.difference;
+    w.difference = std::abs(v - w.value);
+    differences += w.difference;
+    w.value = v;
+    ++w.level;
+  }
+  // Summed afresh: the running sum above may have drifted by rounding.
+  double value = 0.0;
+  differences = 0.0;
+  for (const State &st : states) {
+    value += st.value;
+    differences += st.difference;
+  }
+  out.value = value;
+  out.bound =
+      kDifferenceFactor * differences + kBoundFloor + kToleranceShare * tolerance + CutBound(s);
+  out.converged = out.bound <= tolerance * std::max(1.0, std::abs(value));
   return out;
 }
 
