@@ -8,9 +8,6 @@
 #include <limits>
 #include <stdexcept>
 #include <vector>
-#ifdef DSTATS
-#include <cstdio>
-#endif
 
 #include "lutbake/core/math.h"
 #include "lutbake/integrators/gauss_kronrod.h"
@@ -36,16 +33,12 @@ constexpr double kToleranceShare = 0.2;
 // The share of the tolerance the outer panels' doubled differences may
 // take together.
 constexpr double kPanelShare = 0.5;
-// The outer panels are graded toward the azimuths where the inner structure
-// changes by this ratio (each panel keeps a quarter of the rest): with the
-// panels refined one by one, fewer and longer panels cost less than the
-// inner rule's ratio 2 (validated like the rest; see the header).
-constexpr double kOuterKeep = 0.25;
-constexpr double kMaxPanel = 0.5;         // in x, w, t and phi
-constexpr double kBeckmannCut = 7.0;      // t = T / alpha
-constexpr int kScanAzimuths = 1024;       // to find the outer kinks
-constexpr double kInfiniteT = 1e300;      // a kink beyond this is at T = infinity
-constexpr double kSmallestScale = 1e-14;  // grading stops here whatever the scale
+constexpr double kMaxPanel = 0.5;          // in x and w
+constexpr double kBeckmannMaxPanel = 1.0;  // in t (exp(-t^2) is entire)
+constexpr double kBeckmannCut = 7.0;       // t = T / alpha
+constexpr int kScanAzimuths = 1024;        // to find the outer kinks
+constexpr double kInfiniteT = 1e300;       // a kink beyond this is at T = infinity
+constexpr double kSmallestScale = 1e-14;   // grading stops here whatever the scale
 
 void CheckArguments(double alpha, double mu_o, double eta, double tolerance) {
   if (!(alpha >= 0.0 && alpha <= 1.0))
@@ -66,7 +59,6 @@ struct Setup {
   double cc2;           // c_crit^2 = 1 - eta^2 for eta < 1, else 0
   double horizonScale;  // in mu_i: min(alpha, mu_o) / 2
   double grazingScale;  // in c, at o.h = 0: sqrt(eta^2 - 1) / 2 (0: none)
-  double azimuthScale;  // in phi, at the detected kinks
 };
 
 enum Kind : int { kFacet = 1, kMirror = 2, kCritical = 3, kRefracted = 4, kSplit = 5 };
@@ -188,6 +180,7 @@ uint32_t Signature(const Setup &s, double phi) {
 struct Point {
   double v, below, above;  // position and grading scales, in the variable
   bool sqBelow = false, sqAbove = false;
+  double keep = 0.5;  // the grading toward it: each panel keeps this share of the rest
 };
 
 struct Panel {
@@ -225,7 +218,7 @@ void GradeToward(double a, double b, double delta, bool towardA, std::vector<Pan
 // longer than max(its start, nearSingular) (singularities at +-i nearSingular
 // about 0).
 void BuildPanels(const std::vector<Point> &points, double maxLength, double nearSingular,
-                 std::vector<Panel> *out, double keep = 0.5) {
+                 std::vector<Panel> *out) {
   for (size_t k = 0; k + 1 < points.size(); ++k) {
     const Point &p = points[k], &q = points[k + 1];
     if (!(q.v > p.v)) continue;
@@ -235,12 +228,12 @@ void BuildPanels(const std::vector<Point> &points, double maxLength, double near
     const bool gq = q.below > 0.0 && q.below < q.v - p.v;
     if (gp && gq) {
       const double mid = 0.5 * (p.v + q.v);
-      GradeToward(p.v, mid, p.above, true, &graded, keep);
-      GradeToward(mid, q.v, q.below, false, &graded, keep);
+      GradeToward(p.v, mid, p.above, true, &graded, p.keep);
+      GradeToward(mid, q.v, q.below, false, &graded, q.keep);
     } else if (gp) {
-      GradeToward(p.v, q.v, p.above, true, &graded, keep);
+      GradeToward(p.v, q.v, p.above, true, &graded, p.keep);
     } else if (gq) {
-      GradeToward(p.v, q.v, q.below, false, &graded, keep);
+      GradeToward(p.v, q.v, q.below, false, &graded, q.keep);
     } else if (p.sqAbove && q.sqBelow) {
       // Two square-root ends: one quadratic panel toward each.
       graded.push_back({p.v, 0.5 * (p.v + q.v)});
@@ -414,7 +407,7 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
   if (T_end / alpha <= kBeckmannCut && s.grazingScale > 0.0)
     last.below = s.grazingScale / std::abs(DcDT(sc, s.mu_o, T_end)) / alpha;
   points.push_back(last);
-  BuildPanels(points, kMaxPanel, 0.0, &panels);
+  BuildPanels(points, kBeckmannMaxPanel, 0.0, &panels);
   for (const Panel &p : panels) {
     double part = 0.0;
     for (int j = 0; j < n; ++j) {
@@ -432,7 +425,7 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
 }
 
 Setup MakeSetup(NdfKind kind, SmithForm smith, DielectricLobes lobes, double alpha, double mu_o,
-                double eta, double tolerance) {
+                double eta) {
   Setup s;
   s.ndf = Ndf{kind, alpha};
   s.smith = smith;
@@ -445,13 +438,33 @@ Setup MakeSetup(NdfKind kind, SmithForm smith, DielectricLobes lobes, double alp
   s.cc2 = eta < 1.0 ? (1.0 - eta) * (1.0 + eta) : 0.0;
   s.horizonScale = std::max(0.5 * std::min(alpha, mu_o), kSmallestScale);
   s.grazingScale = eta > 1.0 ? 0.5 * std::sqrt((eta - 1.0) * (eta + 1.0)) : 0.0;
-  s.azimuthScale = Clamp(std::sqrt(1e-3 * tolerance), 1e-9, 0.1);
   return s;
+}
+
+// How the outer panels are laid out: the grading ratio toward pi/2 and
+// the detected kinks (1 / keep), the longest panel, and the scale the
+// grading stops at next to a detected kink.
+struct OuterGrid {
+  double keep, maxPanel, azimuthScale;
+};
+
+// The coarse grid the albedo tries first: ratio 4, panels up to pi/2 and
+// the grading stopped at sqrt(10 tolerance); its panels are refined one by
+// one, so that the few that need it reach the higher levels.
+OuterGrid CoarseGrid(double tolerance) {
+  return {0.25, 0.5 * kPi, Clamp(std::sqrt(10.0 * tolerance), 1e-9, 0.1)};
+}
+
+// The fine grid: ratio 2, panels up to 0.5, grading down to sqrt(1e-3
+// tolerance). The average uses it; the albedo falls back on it where the
+// coarse grid does not converge.
+OuterGrid FineGrid(double tolerance) {
+  return {0.5, kMaxPanel, Clamp(std::sqrt(1e-3 * tolerance), 1e-9, 0.1)};
 }
 
 // The outer panels in phi: 0, pi/2 (graded to asinh(mu_o / s_o)), the
 // detected kinks (graded to azimuthScale), pi.
-std::vector<Panel> OuterPanels(const Setup &s) {
+std::vector<Panel> OuterPanels(const Setup &s, const OuterGrid &grid) {
   std::vector<Panel> panels;
   if (s.s_o == 0.0) {  // normal view: nothing depends on phi
     panels.push_back({0.0, kPi});
@@ -461,7 +474,7 @@ std::vector<Panel> OuterPanels(const Setup &s) {
   points.push_back({0.0, 0.0, 0.0});
   points.push_back({kPi, 0.0, 0.0});
   const double a = std::max(std::asinh(s.mu_o / s.s_o), kSmallestScale);
-  points.push_back({0.5 * kPi, a, a});
+  points.push_back({0.5 * kPi, a, a, false, false, grid.keep});
   uint32_t previous = Signature(s, 0.0);
   double previousPhi = 0.0;
   // For eta >= 1 the only kinks are T_r and the range's end T_c, with T_r <
@@ -478,13 +491,14 @@ std::vector<Panel> OuterPanels(const Setup &s) {
         (Signature(s, mid) == previous ? lo : hi) = mid;
       }
       const double at = 0.5 * (lo + hi);
-      if (std::abs(at - 0.5 * kPi) > 1e-12) points.push_back({at, s.azimuthScale, s.azimuthScale});
+      if (std::abs(at - 0.5 * kPi) > 1e-12)
+        points.push_back({at, grid.azimuthScale, grid.azimuthScale, false, false, grid.keep});
     }
     previous = current;
     previousPhi = phi;
   }
   std::sort(points.begin(), points.end(), [](const Point &x, const Point &y) { return x.v < y.v; });
-  BuildPanels(points, kMaxPanel, 0.0, &panels, kOuterKeep);
+  BuildPanels(points, grid.maxPanel, 0.0, &panels);
   return panels;
 }
 
@@ -513,25 +527,14 @@ double CutBound(const Setup &s) {
   return std::exp(-kBeckmannCut * kBeckmannCut) * (s.mu_o + 8.0 * s.s_o * s.ndf.alpha) * s.invNorm;
 }
 
-}  // namespace
-
-DielectricIntegral IntegrateDielectricAlbedo(NdfKind ndf, SmithForm smith, DielectricLobes lobes,
-                                             double alpha, double mu_o, double eta,
-                                             double tolerance) {
-  CheckArguments(alpha, mu_o, eta, tolerance);
+// The albedo over the given outer panels. Every panel at levels 0 and 1;
+// then the panel with the largest difference is taken a level further,
+// until twice the sum of the panels' differences is within kPanelShare of
+// the tolerance (or none can go further). The bound takes the sum of the
+// differences, not the difference of the sums.
+DielectricIntegral Refine(const Setup &s, const std::vector<Panel> &outer, double tolerance,
+                          double cut, uint64_t *evaluations) {
   DielectricIntegral out;
-  if (alpha == 0.0) {
-    out.value = DielectricSmoothAlbedo(lobes, eta, mu_o);
-    out.exact = out.converged = true;
-    return out;
-  }
-  const Setup s = MakeSetup(ndf, smith, lobes, alpha, mu_o, eta, tolerance);
-  const std::vector<Panel> outer = OuterPanels(s);
-  // Every outer panel at levels 0 and 1; then the panel with the largest
-  // difference is taken a level further, until twice the sum of the
-  // panels' differences is within kPanelShare of the tolerance (or none can
-  // go further). The bound takes the sum of the differences, not the
-  // difference of the sums.
   struct State {
     double value, difference;
     int level;
@@ -540,8 +543,8 @@ DielectricIntegral IntegrateDielectricAlbedo(NdfKind ndf, SmithForm smith, Diele
   states.clear();
   double differences = 0.0;
   for (const Panel &p : outer) {
-    const double v0 = PanelAtLevel(s, p, 0, &out.evaluations) * kInvPi;
-    const double v1 = PanelAtLevel(s, p, 1, &out.evaluations) * kInvPi;
+    const double v0 = PanelAtLevel(s, p, 0, evaluations) * kInvPi;
+    const double v1 = PanelAtLevel(s, p, 1, evaluations) * kInvPi;
     states.push_back({v1, std::abs(v1 - v0), 1});
     differences += std::abs(v1 - v0);
   }
@@ -554,7 +557,7 @@ DielectricIntegral IntegrateDielectricAlbedo(NdfKind ndf, SmithForm smith, Diele
         worst = static_cast<int>(k);
     if (worst < 0) break;
     State &w = states[worst];
-    const double v = PanelAtLevel(s, outer[worst], w.level + 1, &out.evaluations) * kInvPi;
+    const double v = PanelAtLevel(s, outer[worst], w.level + 1, evaluations) * kInvPi;
     differences -= w.difference;
     w.difference = std::abs(v - w.value);
     differences += w.difference;
@@ -569,9 +572,36 @@ DielectricIntegral IntegrateDielectricAlbedo(NdfKind ndf, SmithForm smith, Diele
     differences += st.difference;
   }
   out.value = value;
-  out.bound =
-      kDifferenceFactor * differences + kBoundFloor + kToleranceShare * tolerance + CutBound(s);
+  out.bound = kDifferenceFactor * differences + kBoundFloor + kToleranceShare * tolerance + cut;
   out.converged = out.bound <= tolerance * std::max(1.0, std::abs(value));
+  return out;
+}
+
+}  // namespace
+
+DielectricIntegral IntegrateDielectricAlbedo(NdfKind ndf, SmithForm smith, DielectricLobes lobes,
+                                             double alpha, double mu_o, double eta,
+                                             double tolerance) {
+  CheckArguments(alpha, mu_o, eta, tolerance);
+  DielectricIntegral out;
+  if (alpha == 0.0) {
+    out.value = DielectricSmoothAlbedo(lobes, eta, mu_o);
+    out.exact = out.converged = true;
+    return out;
+  }
+  const Setup s = MakeSetup(ndf, smith, lobes, alpha, mu_o, eta);
+  // The coarse grid first; where it does not converge (some panel's
+  // difference stays large at the finest level: a few grazing views at
+  // eta < 1), the fine one, keeping the smaller bound.
+  const double cut = CutBound(s);
+  uint64_t evaluations = 0;
+  out = Refine(s, OuterPanels(s, CoarseGrid(tolerance)), tolerance, cut, &evaluations);
+  if (!out.converged) {
+    const DielectricIntegral fine =
+        Refine(s, OuterPanels(s, FineGrid(tolerance)), tolerance, cut, &evaluations);
+    if (fine.bound < out.bound) out = fine;
+  }
+  out.evaluations = evaluations;
   return out;
 }
 
@@ -585,7 +615,7 @@ DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, Diel
   const double first = std::max(std::min(alpha, 0.01), 1e-12);
   points.push_back({0.0, 0.0, first});
   if (cc > 0.0 && cc < 1.0) {
-    const double d = std::sqrt(1e-3 * tolerance);
+    const double d = std::sqrt(10.0 * tolerance);
     points.push_back({cc, d, d});
   }
   points.push_back({1.0, 0.0, 0.0});
@@ -612,8 +642,8 @@ DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, Diel
         if (alpha == 0.0) {
           E = DielectricSmoothAlbedo(lobes, eta, mu);
         } else {
-          const Setup s = MakeSetup(ndf, smith, lobes, alpha, mu, eta, tolerance);
-          E = AtLevel(s, OuterPanels(s), level, &out.evaluations);
+          const Setup s = MakeSetup(ndf, smith, lobes, alpha, mu, eta);
+          E = AtLevel(s, OuterPanels(s, FineGrid(tolerance)), level, &out.evaluations);
           *floors += rule.w[j] * len * 2.0 * mu * CutBound(s);
         }
         part += rule.w[j] * 2.0 * mu * E;
