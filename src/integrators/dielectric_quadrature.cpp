@@ -30,11 +30,15 @@ constexpr double kDifferenceFactor = 2.0;
 // 0.034, eta = 0.56: 1.1e-9); the share covers that with margin (2e-9 at
 // tolerance 1e-8) and keeps the bound reachable.
 constexpr double kToleranceShare = 0.2;
-constexpr double kMaxPanel = 0.5;         // in x, w, t and phi
-constexpr double kBeckmannCut = 7.0;      // t = T / alpha
-constexpr int kScanAzimuths = 1024;       // to find the outer kinks
-constexpr double kInfiniteT = 1e300;      // a kink beyond this is at T = infinity
-constexpr double kSmallestScale = 1e-14;  // grading stops here whatever the scale
+// The share of the tolerance the outer panels' doubled differences may
+// take together.
+constexpr double kPanelShare = 0.5;
+constexpr double kMaxPanel = 0.5;          // in x and w
+constexpr double kBeckmannMaxPanel = 1.0;  // in t (exp(-t^2) is entire)
+constexpr double kBeckmannCut = 7.0;       // t = T / alpha
+constexpr int kScanAzimuths = 1024;        // to find the outer kinks
+constexpr double kInfiniteT = 1e300;       // a kink beyond this is at T = infinity
+constexpr double kSmallestScale = 1e-14;   // grading stops here whatever the scale
 
 void CheckArguments(double alpha, double mu_o, double eta, double tolerance) {
   if (!(alpha >= 0.0 && alpha <= 1.0))
@@ -55,7 +59,6 @@ struct Setup {
   double cc2;           // c_crit^2 = 1 - eta^2 for eta < 1, else 0
   double horizonScale;  // in mu_i: min(alpha, mu_o) / 2
   double grazingScale;  // in c, at o.h = 0: sqrt(eta^2 - 1) / 2 (0: none)
-  double azimuthScale;  // in phi, at the detected kinks
 };
 
 enum Kind : int { kFacet = 1, kMirror = 2, kCritical = 3, kRefracted = 4, kSplit = 5 };
@@ -69,6 +72,25 @@ struct Kink {
   bool sqBelow = false, sqAbove = false;
 };
 
+// At most: the mirror's horizon, two critical roots, two refracted
+// horizons and GGX's split.
+constexpr int kMaxKinks = 6;
+struct Kinks {
+  Kink k[kMaxKinks];
+  int n = 0;
+  void clear() { n = 0; }
+  void push_back(const Kink &x) { k[n++] = x; }
+  size_t size() const { return static_cast<size_t>(n); }
+  const Kink &operator[](size_t i) const { return k[i]; }
+  const Kink *begin() const { return k; }
+  const Kink *end() const { return k + n; }
+  // Insertion sort by T (a handful of entries).
+  void Sort() {
+    for (int i = 1; i < n; ++i)
+      for (int j = i; j > 0 && k[j].T < k[j - 1].T; --j) std::swap(k[j], k[j - 1]);
+  }
+};
+
 // dc/dT at T (c = (sc T + mu_o) / sqrt(1 + T^2)).
 double DcDT(double sc, double mu_o, double T) {
   const double q = 1.0 + T * T;
@@ -77,8 +99,7 @@ double DcDT(double sc, double mu_o, double T) {
 
 // The kinks of the inner integrand at one azimuth, sorted, all in (0, T_end),
 // and T_end itself (infinity when the facets stay visible to theta = pi/2).
-void InnerKinks(const Setup &s, double cosPhi, double sinPhi, std::vector<Kink> *kinks,
-                double *T_end) {
+void InnerKinks(const Setup &s, double cosPhi, double sinPhi, Kinks *kinks, double *T_end) {
   kinks->clear();
   const double sc = s.s_o * cosPhi, mu_o = s.mu_o;
   *T_end = sc < 0.0 ? (mu_o > 0.0 ? mu_o / (-sc) : 0.0) : std::numeric_limits<double>::infinity();
@@ -140,24 +161,26 @@ void InnerKinks(const Setup &s, double cosPhi, double sinPhi, std::vector<Kink> 
   }
   if (s.ndf.kind == NdfKind::kGgx && inside(s.ndf.alpha))
     kinks->push_back({s.ndf.alpha, kSplit, 0.0, 0.0});
-  std::sort(kinks->begin(), kinks->end(), [](const Kink &a, const Kink &b) { return a.T < b.T; });
+  kinks->Sort();
 }
 
 // The sequence of kink kinds at an azimuth: where it changes, the inner
 // integral is not analytic in phi.
-std::vector<int> Signature(const Setup &s, double phi) {
-  std::vector<Kink> kinks;
+// Packed 3 bits a kind, in order (at most kMaxKinks kinds).
+uint32_t Signature(const Setup &s, double phi) {
+  Kinks kinks;
   double T_end = 0.0;
   InnerKinks(s, std::cos(phi), std::sin(phi), &kinks, &T_end);
-  std::vector<int> out;
+  uint32_t out = 0;
   for (const Kink &k : kinks)
-    if (k.kind != kSplit) out.push_back(k.kind);
+    if (k.kind != kSplit) out = (out << 3) | static_cast<uint32_t>(k.kind);
   return out;
 }
 
 struct Point {
   double v, below, above;  // position and grading scales, in the variable
   bool sqBelow = false, sqAbove = false;
+  double keep = 0.5;  // the grading toward it: each panel keeps this share of the rest
 };
 
 struct Panel {
@@ -165,14 +188,16 @@ struct Panel {
   int square = 0;  // +1: v = a + (b - a) u^2; -1: v = b - (b - a) u^2; 0: linear
 };
 
-// Panels from a to b graded geometrically (ratio 2) toward a until the one
-// next to a is at most delta long.
-void GradeToward(double a, double b, double delta, bool towardA, std::vector<Panel> *out) {
+// Panels from a to b graded geometrically toward a (each keeps the share
+// `keep` of what is left: ratio 1 / keep) until the one next to a is at
+// most delta long.
+void GradeToward(double a, double b, double delta, bool towardA, std::vector<Panel> *out,
+                 double keep = 0.5) {
   delta = std::max(delta, kSmallestScale * std::max(1.0, std::abs(a) + std::abs(b)));
   if (towardA) {
     double cur = b;
     while (cur - a > delta) {
-      const double mid = a + 0.5 * (cur - a);
+      const double mid = a + keep * (cur - a);
       out->push_back({mid, cur});
       cur = mid;
     }
@@ -180,7 +205,7 @@ void GradeToward(double a, double b, double delta, bool towardA, std::vector<Pan
   } else {
     double cur = a;
     while (b - cur > delta) {
-      const double mid = b - 0.5 * (b - cur);
+      const double mid = b - keep * (b - cur);
       out->push_back({cur, mid});
       cur = mid;
     }
@@ -197,17 +222,18 @@ void BuildPanels(const std::vector<Point> &points, double maxLength, double near
   for (size_t k = 0; k + 1 < points.size(); ++k) {
     const Point &p = points[k], &q = points[k + 1];
     if (!(q.v > p.v)) continue;
-    std::vector<Panel> graded;
+    thread_local std::vector<Panel> graded;
+    graded.clear();
     const bool gp = p.above > 0.0 && p.above < q.v - p.v;
     const bool gq = q.below > 0.0 && q.below < q.v - p.v;
     if (gp && gq) {
       const double mid = 0.5 * (p.v + q.v);
-      GradeToward(p.v, mid, p.above, true, &graded);
-      GradeToward(mid, q.v, q.below, false, &graded);
+      GradeToward(p.v, mid, p.above, true, &graded, p.keep);
+      GradeToward(mid, q.v, q.below, false, &graded, q.keep);
     } else if (gp) {
-      GradeToward(p.v, q.v, p.above, true, &graded);
+      GradeToward(p.v, q.v, p.above, true, &graded, p.keep);
     } else if (gq) {
-      GradeToward(p.v, q.v, q.below, false, &graded);
+      GradeToward(p.v, q.v, q.below, false, &graded, q.keep);
     } else if (p.sqAbove && q.sqBelow) {
       // Two square-root ends: one quadratic panel toward each.
       graded.push_back({p.v, 0.5 * (p.v + q.v)});
@@ -273,15 +299,18 @@ double NodeValue(const Setup &s, double sc, double cosTheta, double sinTheta,
 
 // The inner integral at one azimuth with n nodes per panel.
 double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *evaluations) {
-  std::vector<Kink> kinks;
+  Kinks kinks;
   double T_end = 0.0;
   InnerKinks(s, cosPhi, sinPhi, &kinks, &T_end);
   if (!(T_end > 0.0)) return 0.0;
   const double alpha = s.ndf.alpha, sc = s.s_o * cosPhi;
   const GaussLegendreRule &rule = GaussLegendre(n);
   double sum = 0.0;
-  std::vector<Point> points;
-  std::vector<Panel> panels;
+  // Reused across calls: no allocation per azimuth.
+  thread_local std::vector<Point> points;
+  thread_local std::vector<Panel> panels;
+  points.clear();
+  panels.clear();
   if (s.ndf.kind == NdfKind::kGgx) {
     // The core ends at T_s = alpha, or at a kink within a factor 2 of
     // alpha, which then becomes the end point of both variables with its
@@ -378,7 +407,7 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
   if (T_end / alpha <= kBeckmannCut && s.grazingScale > 0.0)
     last.below = s.grazingScale / std::abs(DcDT(sc, s.mu_o, T_end)) / alpha;
   points.push_back(last);
-  BuildPanels(points, kMaxPanel, 0.0, &panels);
+  BuildPanels(points, kBeckmannMaxPanel, 0.0, &panels);
   for (const Panel &p : panels) {
     double part = 0.0;
     for (int j = 0; j < n; ++j) {
@@ -396,7 +425,7 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
 }
 
 Setup MakeSetup(NdfKind kind, SmithForm smith, DielectricLobes lobes, double alpha, double mu_o,
-                double eta, double tolerance) {
+                double eta) {
   Setup s;
   s.ndf = Ndf{kind, alpha};
   s.smith = smith;
@@ -409,13 +438,33 @@ Setup MakeSetup(NdfKind kind, SmithForm smith, DielectricLobes lobes, double alp
   s.cc2 = eta < 1.0 ? (1.0 - eta) * (1.0 + eta) : 0.0;
   s.horizonScale = std::max(0.5 * std::min(alpha, mu_o), kSmallestScale);
   s.grazingScale = eta > 1.0 ? 0.5 * std::sqrt((eta - 1.0) * (eta + 1.0)) : 0.0;
-  s.azimuthScale = Clamp(std::sqrt(1e-3 * tolerance), 1e-9, 0.1);
   return s;
+}
+
+// How the outer panels are laid out: the grading ratio toward pi/2 and
+// the detected kinks (1 / keep), the longest panel, and the scale the
+// grading stops at next to a detected kink.
+struct OuterGrid {
+  double keep, maxPanel, azimuthScale;
+};
+
+// The coarse grid the albedo tries first: ratio 4, panels up to pi/2 and
+// the grading stopped at sqrt(10 tolerance); its panels are refined one by
+// one, so that the few that need it reach the higher levels.
+OuterGrid CoarseGrid(double tolerance) {
+  return {0.25, 0.5 * kPi, Clamp(std::sqrt(10.0 * tolerance), 1e-9, 0.1)};
+}
+
+// The fine grid: ratio 2, panels up to 0.5, grading down to sqrt(1e-3
+// tolerance). The average uses it; the albedo falls back on it where the
+// coarse grid does not converge.
+OuterGrid FineGrid(double tolerance) {
+  return {0.5, kMaxPanel, Clamp(std::sqrt(1e-3 * tolerance), 1e-9, 0.1)};
 }
 
 // The outer panels in phi: 0, pi/2 (graded to asinh(mu_o / s_o)), the
 // detected kinks (graded to azimuthScale), pi.
-std::vector<Panel> OuterPanels(const Setup &s) {
+std::vector<Panel> OuterPanels(const Setup &s, const OuterGrid &grid) {
   std::vector<Panel> panels;
   if (s.s_o == 0.0) {  // normal view: nothing depends on phi
     panels.push_back({0.0, kPi});
@@ -425,8 +474,8 @@ std::vector<Panel> OuterPanels(const Setup &s) {
   points.push_back({0.0, 0.0, 0.0});
   points.push_back({kPi, 0.0, 0.0});
   const double a = std::max(std::asinh(s.mu_o / s.s_o), kSmallestScale);
-  points.push_back({0.5 * kPi, a, a});
-  std::vector<int> previous = Signature(s, 0.0);
+  points.push_back({0.5 * kPi, a, a, false, false, grid.keep});
+  uint32_t previous = Signature(s, 0.0);
   double previousPhi = 0.0;
   // For eta >= 1 the only kinks are T_r and the range's end T_c, with T_r <
   // T_c wherever T_c exists (mu_r = -mu_o < 0 at o.h = 0): the sequence never
@@ -434,7 +483,7 @@ std::vector<Panel> OuterPanels(const Setup &s) {
   const int scan = s.cc2 > 0.0 ? kScanAzimuths : 0;
   for (int j = 1; j <= scan; ++j) {
     const double phi = kPi * j / scan;
-    std::vector<int> current = Signature(s, phi);
+    const uint32_t current = Signature(s, phi);
     if (current != previous) {
       double lo = previousPhi, hi = phi;
       for (int it = 0; it < 60 && hi - lo > 1e-15; ++it) {
@@ -442,29 +491,33 @@ std::vector<Panel> OuterPanels(const Setup &s) {
         (Signature(s, mid) == previous ? lo : hi) = mid;
       }
       const double at = 0.5 * (lo + hi);
-      if (std::abs(at - 0.5 * kPi) > 1e-12) points.push_back({at, s.azimuthScale, s.azimuthScale});
+      if (std::abs(at - 0.5 * kPi) > 1e-12)
+        points.push_back({at, grid.azimuthScale, grid.azimuthScale, false, false, grid.keep});
     }
-    previous = std::move(current);
+    previous = current;
     previousPhi = phi;
   }
   std::sort(points.begin(), points.end(), [](const Point &x, const Point &y) { return x.v < y.v; });
-  BuildPanels(points, kMaxPanel, 0.0, &panels);
+  BuildPanels(points, grid.maxPanel, 0.0, &panels);
   return panels;
 }
 
-double AtLevel(const Setup &s, const std::vector<Panel> &outer, int level, uint64_t *evaluations) {
+// One outer panel at one level (without the 1/pi).
+double PanelAtLevel(const Setup &s, const Panel &p, int level, uint64_t *evaluations) {
   const int n = kNodes[level];
   const GaussLegendreRule &rule = GaussLegendre(n);
-  double sum = 0.0;
-  for (const Panel &p : outer) {
-    const double len = p.b - p.a;
-    double part = 0.0;
-    for (int j = 0; j < n; ++j) {
-      const double phi = p.a + len * rule.x[j];
-      part += rule.w[j] * Inner(s, std::cos(phi), std::sin(phi), n, evaluations);
-    }
-    sum += part * len;
+  const double len = p.b - p.a;
+  double part = 0.0;
+  for (int j = 0; j < n; ++j) {
+    const double phi = p.a + len * rule.x[j];
+    part += rule.w[j] * Inner(s, std::cos(phi), std::sin(phi), n, evaluations);
   }
+  return part * len;
+}
+
+double AtLevel(const Setup &s, const std::vector<Panel> &outer, int level, uint64_t *evaluations) {
+  double sum = 0.0;
+  for (const Panel &p : outer) sum += PanelAtLevel(s, p, level, evaluations);
   return sum * kInvPi;
 }
 
@@ -472,6 +525,56 @@ double AtLevel(const Setup &s, const std::vector<Panel> &outer, int level, uint6
 double CutBound(const Setup &s) {
   if (s.ndf.kind != NdfKind::kBeckmann) return 0.0;
   return std::exp(-kBeckmannCut * kBeckmannCut) * (s.mu_o + 8.0 * s.s_o * s.ndf.alpha) * s.invNorm;
+}
+
+// The albedo over the given outer panels. Every panel at levels 0 and 1;
+// then the panel with the largest difference is taken a level further,
+// until twice the sum of the panels' differences is within kPanelShare of
+// the tolerance (or none can go further). The bound takes the sum of the
+// differences, not the difference of the sums.
+DielectricIntegral Refine(const Setup &s, const std::vector<Panel> &outer, double tolerance,
+                          double cut, uint64_t *evaluations) {
+  DielectricIntegral out;
+  struct State {
+    double value, difference;
+    int level;
+  };
+  thread_local std::vector<State> states;
+  states.clear();
+  double differences = 0.0;
+  for (const Panel &p : outer) {
+    const double v0 = PanelAtLevel(s, p, 0, evaluations) * kInvPi;
+    const double v1 = PanelAtLevel(s, p, 1, evaluations) * kInvPi;
+    states.push_back({v1, std::abs(v1 - v0), 1});
+    differences += std::abs(v1 - v0);
+  }
+  const double budget = kPanelShare * tolerance;
+  while (kDifferenceFactor * differences > budget) {
+    int worst = -1;
+    for (size_t k = 0; k < states.size(); ++k)
+      if (states[k].level + 1 < kLevels &&
+          (worst < 0 || states[k].difference > states[worst].difference))
+        worst = static_cast<int>(k);
+    if (worst < 0) break;
+    State &w = states[worst];
+    const double v = PanelAtLevel(s, outer[worst], w.level + 1, evaluations) * kInvPi;
+    differences -= w.difference;
+    w.difference = std::abs(v - w.value);
+    differences += w.difference;
+    w.value = v;
+    ++w.level;
+  }
+  // Summed afresh: the running sum above may have drifted by rounding.
+  double value = 0.0;
+  differences = 0.0;
+  for (const State &st : states) {
+    value += st.value;
+    differences += st.difference;
+  }
+  out.value = value;
+  out.bound = kDifferenceFactor * differences + kBoundFloor + kToleranceShare * tolerance + cut;
+  out.converged = out.bound <= tolerance * std::max(1.0, std::abs(value));
+  return out;
 }
 
 }  // namespace
@@ -486,18 +589,19 @@ DielectricIntegral IntegrateDielectricAlbedo(NdfKind ndf, SmithForm smith, Diele
     out.exact = out.converged = true;
     return out;
   }
-  const Setup s = MakeSetup(ndf, smith, lobes, alpha, mu_o, eta, tolerance);
-  const std::vector<Panel> outer = OuterPanels(s);
-  double previous = AtLevel(s, outer, 0, &out.evaluations);
-  for (int level = 1; level < kLevels; ++level) {
-    const double value = AtLevel(s, outer, level, &out.evaluations);
-    out.value = value;
-    out.bound = kDifferenceFactor * std::abs(value - previous) + kBoundFloor +
-                kToleranceShare * tolerance + CutBound(s);
-    out.converged = out.bound <= tolerance * std::max(1.0, std::abs(value));
-    if (out.converged) break;
-    previous = value;
+  const Setup s = MakeSetup(ndf, smith, lobes, alpha, mu_o, eta);
+  // The coarse grid first; where it does not converge (some panel's
+  // difference stays large at the finest level: a few grazing views at
+  // eta < 1), the fine one, keeping the smaller bound.
+  const double cut = CutBound(s);
+  uint64_t evaluations = 0;
+  out = Refine(s, OuterPanels(s, CoarseGrid(tolerance)), tolerance, cut, &evaluations);
+  if (!out.converged) {
+    const DielectricIntegral fine =
+        Refine(s, OuterPanels(s, FineGrid(tolerance)), tolerance, cut, &evaluations);
+    if (fine.bound < out.bound) out = fine;
   }
+  out.evaluations = evaluations;
   return out;
 }
 
@@ -511,7 +615,7 @@ DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, Diel
   const double first = std::max(std::min(alpha, 0.01), 1e-12);
   points.push_back({0.0, 0.0, first});
   if (cc > 0.0 && cc < 1.0) {
-    const double d = std::sqrt(1e-3 * tolerance);
+    const double d = std::sqrt(10.0 * tolerance);
     points.push_back({cc, d, d});
   }
   points.push_back({1.0, 0.0, 0.0});
@@ -538,8 +642,8 @@ DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, Diel
         if (alpha == 0.0) {
           E = DielectricSmoothAlbedo(lobes, eta, mu);
         } else {
-          const Setup s = MakeSetup(ndf, smith, lobes, alpha, mu, eta, tolerance);
-          E = AtLevel(s, OuterPanels(s), level, &out.evaluations);
+          const Setup s = MakeSetup(ndf, smith, lobes, alpha, mu, eta);
+          E = AtLevel(s, OuterPanels(s, FineGrid(tolerance)), level, &out.evaluations);
           *floors += rule.w[j] * len * 2.0 * mu * CutBound(s);
         }
         part += rule.w[j] * 2.0 * mu * E;

@@ -60,10 +60,10 @@ class DielectricAverageEstimator {
   double MaxWeight() const { return kDielectricAverageMaxWeight; }
 
  private:
-  NdfKind kind_;
+  Ndf ndf_;
   SmithForm smith_;
   DielectricLobes lobes_;
-  double alpha_, eta_;
+  double eta_;
 };
 
 }  // namespace lutbake
