@@ -139,8 +139,9 @@ TEST(Plan, NothingNeededIsSaidSo) {
   for (const char *scene : {"unlit.gltf", "no_lobe.gltf"}) {
     const BakePlan plan = PlanOf({kPlans + scene});
     EXPECT_TRUE(plan.empty()) << scene;
-    // E, Eavg, Favg, dfg, and sheen_E (issue 14).
-    EXPECT_EQ(plan.omitted.size(), 5u) << scene;
+    // E, Eavg, Favg, dfg, sheen_E (issue 14), glass_E and glass_Eavg (issue 15).
+    EXPECT_EQ(plan.omitted.size(), 7u) << scene;
+    EXPECT_NE(Omitted(plan, "glass_E").find("unlit or has no specular lobe"), std::string::npos);
     EXPECT_NE(Omitted(plan, "E").find("unlit or has no specular lobe"), std::string::npos);
     EXPECT_NE(Omitted(plan, "sheen_E").find("unlit or has no specular lobe"), std::string::npos);
   }
@@ -184,10 +185,15 @@ TEST(Plan, VariantsOfOneTableGetSuffixes) {
 
 TEST(Plan, UnsupportedFeaturesAreListedAndTheRestPlanned) {
   const BakePlan plan = PlanOf({kPlans + "unsupported.gltf"});
-  // KHR_materials_sheen is baked now (sheen_E, issue 14): four remain.
-  ASSERT_EQ(plan.unsupported.size(), 4u);
-  EXPECT_EQ(plan.unsupported[0].material, "glass");
-  EXPECT_EQ(plan.unsupported[0].feature, "KHR_materials_transmission");
+  // KHR_materials_sheen is baked now (sheen_E, issue 14), and so are
+  // KHR_materials_transmission and _volume (glass_E, issue 15): two remain.
+  ASSERT_EQ(plan.unsupported.size(), 2u);
+  EXPECT_EQ(plan.unsupported[0].material, "brushed");
+  EXPECT_EQ(plan.unsupported[0].feature, "KHR_materials_anisotropy");
+  ASSERT_NE(Find(plan, "glass_E"), nullptr);
+  EXPECT_EQ(Find(plan, "glass_E")->etas, (std::vector<double>{1 / 1.5, 1.5}));
+  EXPECT_EQ(Find(plan, "glass_E")->roughness.values, std::vector<double>{0.05});
+  EXPECT_EQ(Find(plan, "glass_E")->materials, std::vector<std::string>{"glass"});
   ASSERT_NE(Find(plan, "sheen_E"), nullptr);
   EXPECT_EQ(Find(plan, "sheen_E")->roughness.values, std::vector<double>{0.3});
   EXPECT_EQ(Find(plan, "sheen_E")->materials, std::vector<std::string>{"velvet"});
@@ -278,10 +284,15 @@ TEST(PlanCli, JsonHasTheDocumentedShape) {
   ASSERT_EQ(r.status, 0) << r.output;
   const auto j = nlohmann::json::parse(r.output);
   ASSERT_TRUE(j["tables"].is_array());
-  // E, Eavg, and sheen_E for unsupported.gltf's velvet (issue 14).
-  ASSERT_EQ(j["tables"].size(), 3u);
+  // E, Eavg; sheen_E for unsupported.gltf's velvet (issue 14); glass_E and
+  // glass_Eavg for its glass (issue 15).
+  ASSERT_EQ(j["tables"].size(), 5u);
   EXPECT_EQ(j["tables"][2]["name"], "sheen_E");
   EXPECT_EQ(j["tables"][2]["sheenRoughness"]["values"], (std::vector<double>{0.3}));
+  EXPECT_EQ(j["tables"][3]["name"], "glass_E");
+  EXPECT_EQ(j["tables"][3]["eta"], (std::vector<double>{1 / 1.5, 1.5}));
+  EXPECT_EQ(j["tables"][3]["size"], (std::vector<int>{32, 1, 2}));
+  EXPECT_EQ(j["tables"][4]["name"], "glass_Eavg");
   EXPECT_EQ(j["tables"][0]["name"], "E");
   EXPECT_EQ(j["tables"][0]["roughness"]["min"], 0.0);
   EXPECT_EQ(j["tables"][0]["roughness"]["max"], 0.8);
@@ -295,9 +306,11 @@ TEST(PlanCli, JsonHasTheDocumentedShape) {
     EXPECT_FALSE(o["reason"].get<std::string>().empty());
   }
   EXPECT_EQ(omitted, (std::vector<std::string>{"Favg", "dfg"}));
-  ASSERT_EQ(j["unsupported"].size(), 4u);
-  EXPECT_EQ(j["unsupported"][0]["material"], "glass");
-  EXPECT_EQ(j["unsupported"][0]["feature"], "KHR_materials_transmission");
+  // Transmission and volume are baked now (issue 15): anisotropy and
+  // iridescence remain.
+  ASSERT_EQ(j["unsupported"].size(), 2u);
+  EXPECT_EQ(j["unsupported"][0]["material"], "brushed");
+  EXPECT_EQ(j["unsupported"][0]["feature"], "KHR_materials_anisotropy");
   // Per-material Schlick constants: F_avg = 20/21 F0 + 1/21 F90 with glTF's F0 = 0.04.
   const auto &paint = j["materials"][0];
   EXPECT_EQ(paint["name"], "paint");
@@ -421,7 +434,7 @@ TEST(PlanCli, UnsupportedStopsTheBakeUnlessSkipped) {
   const auto stop = Lutbake("bake --out " + out.string() + " --scene " + kPlans +
                             "unsupported.gltf --size 4 --samples 64");
   EXPECT_EQ(stop.status, 1);
-  EXPECT_NE(stop.output.find("glass: KHR_materials_transmission"), std::string::npos)
+  EXPECT_NE(stop.output.find("brushed: KHR_materials_anisotropy"), std::string::npos)
       << stop.output;
   EXPECT_FALSE(fs::exists(out));
   const auto skip =

@@ -101,8 +101,12 @@ TEST(SceneReader, RecognisesWhatItCannotBake) {
   ASSERT_EQ(Named(ms, "velvet").sheenRoughness.size(), 1u);
   EXPECT_EQ(Named(ms, "velvet").sheenRoughness[0].min, 0.3);
   EXPECT_EQ(Named(ms, "velvet").sheenRoughness[0].max, 0.3);
-  EXPECT_EQ(Named(ms, "glass").unsupported,
-            (std::vector<std::string>{"KHR_materials_transmission", "KHR_materials_volume"}));
+  // KHR_materials_transmission and _volume are baked (glass_E, issue 15):
+  // ior 1.5 both sides, the base roughness.
+  EXPECT_TRUE(Named(ms, "glass").unsupported.empty());
+  EXPECT_EQ(Named(ms, "glass").transmissionEta, (std::vector<double>{1 / 1.5, 1.5}));
+  ASSERT_EQ(Named(ms, "glass").transmissionRoughness.size(), 1u);
+  EXPECT_EQ(Named(ms, "glass").transmissionRoughness[0].max, 0.05);
   EXPECT_EQ(Named(ms, "brushed").unsupported, std::vector<std::string>{"KHR_materials_anisotropy"});
   EXPECT_EQ(Named(ms, "soap").unsupported, std::vector<std::string>{"KHR_materials_iridescence"});
   // KHR_materials_ior and _specular only change Schlick's F0 and F90.
@@ -157,7 +161,7 @@ TEST(SceneReader, KhronosSampleScenes) {
   EXPECT_EQ(Named(cc, "RoughVariations_Coated").roughness.at(1).max, 1.0);
   EXPECT_EQ(Named(cc, "RoughVariations_Coated").roughness.at(1).min, 0.0);
   // CompareSheen: a sheen layer (sheenRoughnessFactor 0.3, no roughness
-  // texture), baked as sheen_E; CompareIor: features lutbake does not bake.
+  // texture), baked as sheen_E; CompareIor: transmission, baked as glass_E.
   const auto sheen = ReadSceneMaterials(kScenes + "CompareSheen.gltf");
   EXPECT_TRUE(Named(sheen, "glTF Logo Sheen").unsupported.empty());
   ASSERT_EQ(Named(sheen, "glTF Logo Sheen").sheenRoughness.size(), 1u);
@@ -165,8 +169,11 @@ TEST(SceneReader, KhronosSampleScenes) {
   EXPECT_TRUE(Named(sheen, "glTF Logo").unsupported.empty());
   EXPECT_TRUE(Named(sheen, "glTF Logo").sheenRoughness.empty());
   const auto ior = ReadSceneMaterials(kScenes + "CompareIor.gltf");
-  EXPECT_EQ(Named(ior, "glTF Logo Transmission IOR").unsupported,
-            (std::vector<std::string>{"KHR_materials_transmission", "KHR_materials_volume"}));
+  // Transmission with a texture: the base roughness 0.7 (no roughness
+  // texture), the IOR 2.42 both sides (issue 15).
+  EXPECT_TRUE(Named(ior, "glTF Logo Transmission IOR").unsupported.empty());
+  EXPECT_EQ(Named(ior, "glTF Logo Transmission IOR").transmissionEta,
+            (std::vector<double>{1 / 2.42, 2.42}));
 }
 
 TEST(SceneReader, BadFilesNameTheFileAndThePlace) {

@@ -198,6 +198,36 @@ TEST(GlassTables, SmallBakePassesCheck) {
   fs::remove_all(dir);
 }
 
+// A glTF scene with KHR_materials_transmission: planned over exactly the
+// IORs it uses, both sides (1.5 by default, 1.33 from KHR_materials_ior),
+// and the base roughness; baked (glass_E, chosen among the planned tables)
+// and checked; a transmissionFactor of 0 plans nothing and says so.
+TEST(GlassTables, SceneWithTransmissionIsPlannedAndBaked) {
+  const std::string scene = LUTBAKE_TEST_DATA "/plans/glass.gltf";
+  const test::CommandResult plan = Lutbake("plan --json --scene " + scene, true);
+  ASSERT_EQ(plan.status, 0) << plan.output;
+  const nlohmann::json j = nlohmann::json::parse(plan.output);
+  const nlohmann::json *glass = nullptr;
+  for (const auto &t : j["tables"])
+    if (t["name"] == "glass_E") glass = &t;
+  ASSERT_NE(glass, nullptr) << plan.output;
+  EXPECT_EQ((*glass)["eta"], (std::vector<double>{1 / 1.5, 1 / 1.33, 1.33, 1.5}));
+  EXPECT_EQ((*glass)["roughness"]["values"], (std::vector<double>{0.25, 0.5}));
+  EXPECT_EQ((*glass)["materials"], (std::vector<std::string>{"window", "frosted water"}));
+  EXPECT_NE(plan.output.find("transmissionFactor 0: no transmission lobe"), std::string::npos);
+  const fs::path dir = test::Scratch("glass_scene");
+  const test::CommandResult bake = Lutbake("bake --out " + dir.string() + " --scene " + scene +
+                                           " --tables glass_E --size 8 --format exr,bin");
+  ASSERT_EQ(bake.status, 0) << bake.output;
+  const Table t = ReadBinaryTable((dir / "glass_E.bin").string());
+  ASSERT_TRUE(t.is3D());
+  EXPECT_EQ(t.z.nodes, (std::vector<double>{1 / 1.5, 1 / 1.33, 1.33, 1.5}));
+  EXPECT_EQ(t.y.nodes, (std::vector<double>{0.25, 0.5}));
+  const test::CommandResult check = Lutbake("check " + dir.string());
+  EXPECT_EQ(check.status, 0) << check.output;
+  fs::remove_all(dir);
+}
+
 TEST(GlassTables, HeaderHelpersCompileAndLookUp) {
   const fs::path dir = test::Scratch("glass_header");
   const test::CommandResult bake = Lutbake("bake --out " + dir.string() +
