@@ -86,17 +86,20 @@ std::string DielectricTable::EstimatorProblem(Estimator e) const {
   return "";
 }
 
-Axis DielectricTable::EtaAxis(int size) {
+Axis DielectricTable::EtaAxis(int size, bool withMaterials) {
   std::vector<double> nodes;
-  const int n = std::max(size, 2);
+  const int n = std::max(size, 1);
   for (int i = 0; i < n; ++i) {
-    const double s = -0.5 + static_cast<double>(i) / (n - 1);  // in [-1/2, 1/2]
+    // s in [-1/2, 1/2]; a single slice at s = 0 (eta = 1).
+    const double s = n == 1 ? 0.0 : -0.5 + static_cast<double>(i) / (n - 1);
     nodes.push_back((1.0 + s) / (1.0 - s));
   }
-  nodes.push_back(1.0);
-  for (double eta : kMaterialEtas) {
-    nodes.push_back(eta);
-    nodes.push_back(1.0 / eta);
+  if (withMaterials) {
+    nodes.push_back(1.0);
+    for (double eta : kMaterialEtas) {
+      nodes.push_back(eta);
+      nodes.push_back(1.0 / eta);
+    }
   }
   std::sort(nodes.begin(), nodes.end());
   // Values closer than 1e-9 relative are one node (eta = 1 from an odd n).
@@ -152,16 +155,6 @@ PointValue DielectricTable::FromIntegral(const DielectricIntegral &q) {
   out.quadrature = true;
   out.exact = q.exact;
   return out;
-}
-
-double DielectricTable::PanelTolerance(const BakeSettings &s) {
-  return s.tolerance > 0.0 ? s.tolerance : kDefaultQuadratureTolerance;
-}
-
-double DielectricTable::AdaptiveTolerance(const BakeSettings &s) {
-  // As for the other tables: a tolerance run asks for EPS / 32.
-  return s.tolerance > 0.0 ? s.tolerance / (2.0 * kQuadratureErrorFactor)
-                           : kQuadratureDefaultTolerance;
 }
 
 PointValue DielectricTable::EvaluateAlbedo(const BakeSettings &s, double mu, double r,
@@ -236,6 +229,41 @@ void DielectricTable::AddNotes(HeaderText *text) const {
         "Transmission counts energy: without the eta^2 radiance factor, so a smooth interface "
         "gives exactly 1.");
   text->constants.push_back("inline constexpr bool kAlphaIsPerceptualRoughnessSquared = true;");
+}
+
+void DielectricAlbedoTable::Axes(const BakeSettings &, int size, Axis *x, Axis *y) const {
+  *x = MuAxis(size);
+  *y = RoughnessAxis(size);
+}
+
+std::vector<PointCoordinate> DielectricAlbedoTable::Coordinates(const BakeSettings &) const {
+  return {MuCoordinate(), RoughnessCoordinate(), EtaCoordinate()};
+}
+
+void DielectricAverageTable::Axes(const BakeSettings &s, int size, Axis *x, Axis *y) const {
+  *x = RoughnessAxis(size);
+  *y = EtaAxis(s.depthSize > 0 ? s.depthSize : 17, s.depthSize == 0);
+}
+
+std::vector<PointCoordinate> DielectricAverageTable::Coordinates(const BakeSettings &) const {
+  return {RoughnessCoordinate(), EtaCoordinate()};
+}
+
+uint64_t DielectricAverageTable::SamplesPerTexel(const BakeSettings &s) const {
+  return IsQuadrature(s.estimator) ? 0 : s.samples * kAverageSampleFactor;
+}
+
+TableRelations DielectricAverageTable::Relations() const {
+  TableRelations r;
+  r.averageOf = identity_.averageOf;
+  return r;
+}
+
+HeaderText DielectricAverageTable::Header(const Table &) const {
+  HeaderText text;
+  AddNotes(&text);
+  text.lookupComment = identity_.lookupComment;
+  return text;
 }
 
 }  // namespace lutbake

@@ -49,8 +49,10 @@ class DielectricTable : public TableDefinition {
   // Only the visible-normal sampler (vndf, vndf-random) and the quadratures.
   std::string EstimatorProblem(Estimator e) const override;
 
-  // The default eta axis (above) with `size` values uniform in s.
-  static Axis EtaAxis(int size);
+  // The eta axis: `size` values uniform in s, with the material nodes (the
+  // default axis, above) or without them (--eta-size N: exactly N slices;
+  // one is eta = 1).
+  static Axis EtaAxis(int size, bool withMaterials);
   // Which lobes the table integrates.
   virtual DielectricLobes Lobes() const = 0;
 
@@ -62,12 +64,70 @@ class DielectricTable : public TableDefinition {
   static double AlphaOf(double r);
   static void CheckEta(double eta);
   static PointValue FromIntegral(const DielectricIntegral &q);
-  static double PanelTolerance(const BakeSettings &s);
-  static double AdaptiveTolerance(const BakeSettings &s);
   // The directional albedo and its average, with the settings' estimator.
   PointValue EvaluateAlbedo(const BakeSettings &s, double mu, double r, double eta) const;
   PointValue EvaluateAverage(const BakeSettings &s, double r, double eta) const;
   void AddNotes(HeaderText *text) const;
+};
+
+// What glass_E and spec_E share: the axes mu x r x eta (32 x 32 x the
+// default eta axis), the point coordinates and the evaluation. Each adds its
+// name, lobes, role and header.
+class DielectricAlbedoTable : public DielectricTable {
+ public:
+  void Axes(const BakeSettings &, int size, Axis *x, Axis *y) const override;
+  int DefaultDepth() const override { return 17; }
+  void DepthAxis(const BakeSettings &s, int size, Axis *z) const override {
+    *z = EtaAxis(size, s.depthSize == 0);
+  }
+  std::vector<PointCoordinate> Coordinates(const BakeSettings &) const override;
+  int PlannedRoughnessAxis() const override { return 1; }
+  // A 3D table: Evaluate without eta is at eta = 1.
+  PointValue Evaluate(const BakeSettings &s, double mu, double r) const override {
+    return Evaluate3D(s, mu, r, 1.0);
+  }
+  PointValue Evaluate3D(const BakeSettings &s, double mu, double r, double eta) const override {
+    return EvaluateAlbedo(s, mu, r, eta);
+  }
+};
+
+// The averages (glass_Eavg, spec_Eavg) differ only in what they are: each
+// file gives its identity, and this class the rest. Axes r x eta.
+class DielectricAverageTable final : public DielectricTable {
+ public:
+  struct Identity {
+    const char *name;
+    uint64_t seedId;
+    DielectricLobes lobes;
+    const char *averageOf;  // the 3D table it averages
+    const char *summary;
+    const char *lookupComment;
+    PlanRole role;
+  };
+  explicit DielectricAverageTable(const Identity &identity) : identity_(identity) {}
+  const char *Name() const override { return identity_.name; }
+  uint64_t SeedId() const override { return identity_.seedId; }
+  std::string Summary() const override { return identity_.summary; }
+  DielectricLobes Lobes() const override { return identity_.lobes; }
+  PlanRole Role() const override { return identity_.role; }
+  void Axes(const BakeSettings &s, int size, Axis *x, Axis *y) const override;
+  std::vector<PointCoordinate> Coordinates(const BakeSettings &) const override;
+  int PlannedRoughnessAxis() const override { return 0; }
+  PointValue Evaluate(const BakeSettings &s, double r, double eta) const override {
+    return EvaluateAverage(s, r, eta);
+  }
+  // As many samples per texel as a whole 32-texel row of the 3D table.
+  uint64_t SamplesPerTexel(const BakeSettings &s) const override;
+  double ReferenceCost() const override { return 32.0; }
+  // No adaptive E_avg: check judges the texels with the panel rule at 1/64
+  // of their bound, and independently through the average of the 3D
+  // table's rows, whose texels it holds to the adaptive rule.
+  Estimator ReferenceEstimator() const override { return Estimator::kQuadrature; }
+  TableRelations Relations() const override;
+  HeaderText Header(const Table &) const override;
+
+ private:
+  Identity identity_;
 };
 
 }  // namespace lutbake

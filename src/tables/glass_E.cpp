@@ -22,7 +22,7 @@ namespace lutbake {
 
 namespace {
 
-class GlassAlbedo final : public DielectricTable {
+class GlassAlbedo final : public DielectricAlbedoTable {
  public:
   const char *Name() const override { return "glass_E"; }
   uint64_t SeedId() const override { return 6; }
@@ -30,23 +30,7 @@ class GlassAlbedo final : public DielectricTable {
     return "directional albedo of rough glass, reflection + transmission, over (mu, r, eta)";
   }
   DielectricLobes Lobes() const override { return DielectricLobes::kReflectionAndTransmission; }
-  void Axes(const BakeSettings &, int size, Axis *x, Axis *y) const override {
-    *x = MuAxis(size);
-    *y = RoughnessAxis(size);
-  }
-  int DefaultDepth() const override { return 17; }
-  void DepthAxis(const BakeSettings &, int size, Axis *z) const override { *z = EtaAxis(size); }
-  std::vector<PointCoordinate> Coordinates(const BakeSettings &) const override {
-    return {MuCoordinate(), RoughnessCoordinate(), EtaCoordinate()};
-  }
   PlanRole Role() const override { return PlanRole::kGlassCompensation; }
-  int PlannedRoughnessAxis() const override { return 1; }
-  PointValue Evaluate(const BakeSettings &s, double mu, double r) const override {
-    return Evaluate3D(s, mu, r, 1.0);
-  }
-  PointValue Evaluate3D(const BakeSettings &s, double mu, double r, double eta) const override {
-    return EvaluateAlbedo(s, mu, r, eta);
-  }
   HeaderText Header(const Table &table) const override {
     HeaderText text;
     AddNotes(&text);

@@ -82,18 +82,6 @@ SampleStrategy StrategyOf(Estimator estimator) {
   }
 }
 
-double AdaptiveTolerance(const BakeSettings &s) {
-  // A tolerance run asks the adaptive quadrature for EPS / 32: its reported
-  // bound, 16 x the estimate plus the floor, then stays below EPS down to 1e-9.
-  return s.tolerance > 0.0 ? s.tolerance / (2.0 * kQuadratureErrorFactor)
-                           : kQuadratureDefaultTolerance;
-}
-
-// The bound the panel quadrature is asked for.
-double PanelTolerance(const BakeSettings &s) {
-  return s.tolerance > 0.0 ? s.tolerance : kDefaultQuadratureTolerance;
-}
-
 // A mirror (alpha = 0) is exact, not integrated: its only microfacet is n,
 // so the light is the mirror direction, G2 = 1, and E = 1, B = (1 - mu)^5.
 TexelResult MirrorAlbedo(bool split, double mu_o) {

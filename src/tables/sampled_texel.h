@@ -25,6 +25,19 @@ inline PointSet PointSetOf(Estimator estimator) {
 // Scrambled Sobol points are shared by every texel of a table (their
 // trigonometry is then computed once, point_blocks.h): seeded by the table
 // and --seed. Independent random points keep the texel's own seed.
+// The bound the default panel rules are asked for: the run's tolerance, or
+// the float32-exact default.
+inline double PanelTolerance(const BakeSettings &s) {
+  return s.tolerance > 0.0 ? s.tolerance : kDefaultQuadratureTolerance;
+}
+// The adaptive Gauss-Kronrod reference's target: a tolerance run asks it
+// for EPS / 32, so that its reported bound (16 x the estimate plus the
+// floor) stays below EPS down to 1e-9.
+inline double AdaptiveTolerance(const BakeSettings &s) {
+  return s.tolerance > 0.0 ? s.tolerance / (2.0 * kQuadratureErrorFactor)
+                           : kQuadratureDefaultTolerance;
+}
+
 inline uint64_t SampleSeed(uint64_t tableSeedId, const BakeSettings &s, uint64_t pointSeed) {
   return PointSetOf(s.estimator) == PointSet::kScrambledSobol
              ? HashValues({tableSeedId, s.seed, 0x736f626f6cULL})

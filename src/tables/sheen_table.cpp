@@ -119,16 +119,6 @@ PointValue SheenTable::FromIntegral(const SheenIntegral &q) {
   return out;
 }
 
-double SheenTable::PanelTolerance(const BakeSettings &s) {
-  return s.tolerance > 0.0 ? s.tolerance : kDefaultQuadratureTolerance;
-}
-
-double SheenTable::AdaptiveTolerance(const BakeSettings &s) {
-  // As for the microfacet tables: a tolerance run asks for EPS / 32.
-  return s.tolerance > 0.0 ? s.tolerance / (2.0 * kQuadratureErrorFactor)
-                           : kQuadratureDefaultTolerance;
-}
-
 void SheenTable::AddModelNotes(const Table &table, HeaderText *text) {
   const std::string *visibility = table.FindMetadata("visibility");
   const std::string *alpha = table.FindMetadata("alpha");

@@ -41,11 +41,8 @@ class SheenTable : public TableDefinition {
   // alpha from the sheen roughness r in [0, 1] (domain_error outside).
   static double AlphaOf(const BakeSettings &s, double r);
   static PointCoordinate RoughnessCoordinate();
-  // The bound the panel rule is asked for, and the adaptive reference.
   // A quadrature result as a point value (one channel).
   static PointValue FromIntegral(const SheenIntegral &q);
-  static double PanelTolerance(const BakeSettings &s);
-  static double AdaptiveTolerance(const BakeSettings &s);
   // Header notes on the model and the roughness mapping.
   static void AddModelNotes(const Table &table, HeaderText *text);
 };

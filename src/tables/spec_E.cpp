@@ -15,7 +15,7 @@ namespace lutbake {
 
 namespace {
 
-class SpecularAlbedo final : public DielectricTable {
+class SpecularAlbedo final : public DielectricAlbedoTable {
  public:
   const char *Name() const override { return "spec_E"; }
   uint64_t SeedId() const override { return 8; }
@@ -24,22 +24,6 @@ class SpecularAlbedo final : public DielectricTable {
            "(mu, r, eta)";
   }
   DielectricLobes Lobes() const override { return DielectricLobes::kReflection; }
-  void Axes(const BakeSettings &, int size, Axis *x, Axis *y) const override {
-    *x = MuAxis(size);
-    *y = RoughnessAxis(size);
-  }
-  int DefaultDepth() const override { return 17; }
-  void DepthAxis(const BakeSettings &, int size, Axis *z) const override { *z = EtaAxis(size); }
-  std::vector<PointCoordinate> Coordinates(const BakeSettings &) const override {
-    return {MuCoordinate(), RoughnessCoordinate(), EtaCoordinate()};
-  }
-  int PlannedRoughnessAxis() const override { return 1; }
-  PointValue Evaluate(const BakeSettings &s, double mu, double r) const override {
-    return Evaluate3D(s, mu, r, 1.0);
-  }
-  PointValue Evaluate3D(const BakeSettings &s, double mu, double r, double eta) const override {
-    return EvaluateAlbedo(s, mu, r, eta);
-  }
   HeaderText Header(const Table &table) const override {
     HeaderText text;
     AddNotes(&text);

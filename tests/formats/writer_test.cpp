@@ -47,6 +47,7 @@ Table SmallTable(const TableDefinition *kind, int size = 8) {
   BakeSettings s;
   s.size = size;
   s.samples = 64;
+  s.depthSize = 1;  // 3D tables: one slice, at eta = 1 (the format is what is tested)
   s.commandLine = "lutbake bake --test";
   return BakeTable(*kind, s);
 }
@@ -155,15 +156,21 @@ TEST(CppHeaderWriter, CompilesWithWerrorAndLooksUpExactly) {
           const float expected = static_cast<float>(t.value(x, y, c));
           if (kind == &TableNamed("dfg"))
             std::snprintf(line, sizeof line,
-                          "  fail += engine::luts::lookup_dfg(%.9gf, %.9gf)[%d] != %.9gf;\n", fx,
+                          "  fail += engine::luts::lookup_dfg(%.9gf, %.9gf)[%d] != %#.9gf;\n", fx,
                           fy, c, expected);
+          else if (t.is3D())  // its one slice (SmallTable's depthSize 1)
+            std::snprintf(
+                line, sizeof line,
+                "  fail += engine::luts::lookup_%s(%.9gf, %.9gf, float(%.17g)) != %#.9gf;\n",
+                kind->Name(), fx, fy, t.z.TexelCenter(0), expected);
           else if (t.is2D())
             std::snprintf(line, sizeof line,
-                          "  fail += engine::luts::lookup_%s(%.9gf, %.9gf) != %.9gf;\n",
+                          "  fail += engine::luts::lookup_%s(%.9gf, %.9gf) != %#.9gf;\n",
                           kind->Name(), fx, fy, expected);
           else
-            std::snprintf(line, sizeof line, "  fail += engine::luts::lookup_%s(%.9gf) != %.9gf;\n",
-                          kind->Name(), fx, expected);
+            std::snprintf(line, sizeof line,
+                          "  fail += engine::luts::lookup_%s(%.9gf) != %#.9gf;\n", kind->Name(), fx,
+                          expected);
           checks += line;
         }
       }

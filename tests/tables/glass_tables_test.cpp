@@ -5,10 +5,12 @@
 // format checked by `lutbake check`, and the header's trilinear lookup and
 // helpers compiled and run.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -183,7 +185,7 @@ TEST(GlassTables, SmallBakePassesCheck) {
   ASSERT_EQ(bake.status, 0) << bake.output;
   const Table exr = ReadExrTable((dir / "glass_E.exr").string());
   ASSERT_TRUE(exr.is3D());
-  EXPECT_EQ(exr.z.count, 9);  // 1/3 and 3 (s = -+1/2), eta = 1 and 6 materials
+  EXPECT_EQ(exr.z.count, 2);  // --eta-size 2: eta = 1/3 and 3 (s = -+1/2), no material nodes
   const Table bin = ReadBinaryTable((dir / "glass_E.bin").string());
   ASSERT_EQ(bin.values.size(), exr.values.size());
   const test::CommandResult check = Lutbake("check " + dir.string());
@@ -226,6 +228,35 @@ TEST(GlassTables, SceneWithTransmissionIsPlannedAndBaked) {
   const test::CommandResult check = Lutbake("check " + dir.string());
   EXPECT_EQ(check.status, 0) << check.output;
   fs::remove_all(dir);
+}
+
+// Bit-identical for 1 and 2 threads on both sides of the interface.
+TEST(GlassTables, BitIdenticalForOneAndTwoThreads) {
+  const BakeSettings s;
+  const Axis eta = ListedAxis("eta", {1 / 1.5, 1.5});
+  for (const char *name : {"glass_E", "spec_E", "glass_Eavg"}) {
+    const TableDefinition &def = TableNamed(name);
+    const bool threeD = def.PlannedRoughnessAxis() == 1;
+    const Axis x = threeD ? MuAxis(4) : RoughnessAxis(2);
+    const Axis y = threeD ? RoughnessAxis(4) : ListedAxis("eta", {1.5});
+    const Axis z = threeD ? eta : LinearAxis("", 0.0, 1.0, 1);
+    Table one, two;
+    {
+      tbb::global_control c(tbb::global_control::max_allowed_parallelism, 1);
+      one = BakeTableOn(def, s, x, y, z);
+    }
+    {
+      tbb::global_control c(tbb::global_control::max_allowed_parallelism, 2);
+      two = BakeTableOn(def, s, x, y, z);
+    }
+    ASSERT_EQ(one.values.size(), two.values.size());
+    EXPECT_EQ(0,
+              std::memcmp(one.values.data(), two.values.data(), one.values.size() * sizeof(double)))
+        << name;
+    EXPECT_EQ(0,
+              std::memcmp(one.errors.data(), two.errors.data(), one.errors.size() * sizeof(double)))
+        << name;
+  }
 }
 
 TEST(GlassTables, HeaderHelpersCompileAndLookUp) {
