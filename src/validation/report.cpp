@@ -19,6 +19,7 @@ BakeSettings BaseSettings(const ReportSettings &s) {
   b.sheenVisibility = s.sheenVisibility;
   b.sheenAlpha = s.sheenAlpha;
   b.size = s.size;
+  b.depthSize = s.depthSize;
   b.seed = s.seed;
   b.replicates = kDefaultReplicates;
   return b;
@@ -36,12 +37,13 @@ std::vector<std::array<double, 2>> ReferenceValues(const ReportSettings &s,
   BakeSettings reference = BaseSettings(s);
   reference.estimator = table.ReferenceEstimator();
   if (reference.estimator != Estimator::kAdaptiveQuadrature) reference.tolerance = 1e-12;
-  const size_t texels = static_cast<size_t>(layout.width()) * layout.height();
+  const size_t texels = layout.texelCount(), slice = texels / layout.depth();
   std::vector<std::array<double, 2>> ref(texels);
   tbb::parallel_for(size_t(0), texels, [&](size_t t) {
-    const int ix = static_cast<int>(t % layout.width()), iy = static_cast<int>(t / layout.width());
-    const PointValue v =
-        table.Evaluate(reference, layout.x.TexelCenter(ix), layout.y.TexelCenter(iy));
+    const int ix = static_cast<int>(t % layout.width());
+    const int iy = static_cast<int>((t % slice) / layout.width());
+    const int iz = static_cast<int>(t / slice);
+    const PointValue v = EvaluateTexel(table, reference, layout, ix, iy, iz);
     ref[t] = {v.value[0], v.value[1]};
   });
   return ref;
@@ -61,8 +63,11 @@ ReportRow Measure(const TableDefinition &table, const BakeSettings &b,
       static_cast<double>(texels);
   double sumSq = 0;
   size_t within = 0;
+  const size_t slice = static_cast<size_t>(t.width()) * t.height();
   for (size_t i = 0; i < texels; ++i) {
-    const int ix = static_cast<int>(i % t.width()), iy = static_cast<int>(i / t.width());
+    // Every slice of a 3D table has its grazing column and smoothest row.
+    const int ix = static_cast<int>(i % t.width());
+    const int iy = static_cast<int>((i % slice) / t.width());
     double e = 0;
     bool ok = true;
     for (int c = 0; c < t.channels; ++c) {
@@ -104,7 +109,7 @@ std::vector<ReportRow> RunReport(const ReportSettings &s, const ReportProgressFn
     if (progress) progress(std::string("reference values of ") + table->Name());
     // The layout (axes) of the report table, as BakeTable makes it.
     Table layout;
-    DefaultAxes(*table, BaseSettings(s), &layout.x, &layout.y);
+    DefaultAxes(*table, BaseSettings(s), &layout.x, &layout.y, &layout.z);
     const std::vector<std::array<double, 2>> ref = ReferenceValues(s, *table, layout);
     for (Estimator estimator : s.estimators) {
       // An estimator the table does not offer is left out; the Markdown

@@ -24,6 +24,7 @@ struct ReportSettings {
   SheenVisibility sheenVisibility = SheenVisibility::kCharlie;  // the sheen tables' model
   SheenAlpha sheenAlpha = SheenAlpha::kLinear;
   int size = 32;              // texels per axis of every table
+  int depthSize = 0;          // slices of a 3D table's eta axis (0: its default)
   double budgetSeconds = 60;  // in total, split evenly over table x estimator
   uint64_t seed = 0;
 };
