@@ -6,6 +6,7 @@
 
 #include "lutbake/integrators/dielectric_estimator.h"
 #include "lutbake/tables/bake.h"
+#include "microfacet_table.h"
 #include "sampled_texel.h"
 
 namespace lutbake {
@@ -38,15 +39,7 @@ std::string DielectricTable::DescribeModel(const BakeSettings &s) const {
 bool DielectricTable::ReadModel(const Table &table, BakeSettings *s,
                                 std::vector<std::string> *problems) const {
   const size_t before = problems->size();
-  const std::string ndf = RequiredMetadata(table, "ndf", problems),
-                    smith = RequiredMetadata(table, "smith", problems);
-  if (ndf != "ggx" && ndf != "beckmann") problems->push_back("ndf '" + ndf + "' unknown");
-  if (smith != "correlated" && smith != "separable")
-    problems->push_back("smith '" + smith + "' unknown");
-  s->ndf = ndf == "beckmann" ? NdfKind::kBeckmann : NdfKind::kGgx;
-  s->smith = smith == "separable" ? SmithForm::kSeparable : SmithForm::kCorrelated;
-  if (RequiredMetadata(table, "alpha", problems) != "alpha = perceptualRoughness^2")
-    problems->push_back("alpha is not perceptualRoughness^2");
+  ReadNdfSmithModel(table, s, problems);
   if (RequiredMetadata(table, "lobes", problems) != ToString(Lobes()))
     problems->push_back("lobes is not '" + std::string(ToString(Lobes())) + "'");
   // 3D: (mu, r, eta); the averages: (r, eta).
@@ -242,7 +235,7 @@ std::vector<PointCoordinate> DielectricAlbedoTable::Coordinates(const BakeSettin
 
 void DielectricAverageTable::Axes(const BakeSettings &s, int size, Axis *x, Axis *y) const {
   *x = RoughnessAxis(size);
-  *y = EtaAxis(s.depthSize > 0 ? s.depthSize : 17, s.depthSize == 0);
+  *y = EtaAxis(s.depthSize > 0 ? s.depthSize : kDefaultEtaSize, s.depthSize == 0);
 }
 
 std::vector<PointCoordinate> DielectricAverageTable::Coordinates(const BakeSettings &) const {

@@ -15,6 +15,7 @@
 // at those materials a lookup returns a texel, with no interpolation error.
 #pragma once
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,9 @@
 #include "lutbake/tables/table_definition.h"
 
 namespace lutbake {
+
+// Values uniform in s on the default eta axis (before the material nodes).
+inline constexpr int kDefaultEtaSize = 17;
 
 class DielectricTable : public TableDefinition {
  public:
@@ -76,15 +80,16 @@ class DielectricTable : public TableDefinition {
 class DielectricAlbedoTable : public DielectricTable {
  public:
   void Axes(const BakeSettings &, int size, Axis *x, Axis *y) const override;
-  int DefaultDepth() const override { return 17; }
+  int DefaultDepth() const override { return kDefaultEtaSize; }
   void DepthAxis(const BakeSettings &s, int size, Axis *z) const override {
     *z = EtaAxis(size, s.depthSize == 0);
   }
   std::vector<PointCoordinate> Coordinates(const BakeSettings &) const override;
   int PlannedRoughnessAxis() const override { return 1; }
-  // A 3D table: Evaluate without eta is at eta = 1.
-  PointValue Evaluate(const BakeSettings &s, double mu, double r) const override {
-    return Evaluate3D(s, mu, r, 1.0);
+  // A 3D table has no value without eta: callers use Evaluate3D (bake,
+  // eval, check and report do, through the table's depth).
+  PointValue Evaluate(const BakeSettings &, double, double) const override {
+    throw std::logic_error(std::string(Name()) + " is 3D: Evaluate3D takes its eta");
   }
   PointValue Evaluate3D(const BakeSettings &s, double mu, double r, double eta) const override {
     return EvaluateAlbedo(s, mu, r, eta);

@@ -22,9 +22,7 @@ std::string MicrofacetTable::DescribeModel(const BakeSettings &s) const {
   return std::string(ToString(s.ndf)) + " " + std::string(ToString(s.smith));
 }
 
-bool MicrofacetTable::ReadModel(const Table &table, BakeSettings *s,
-                                std::vector<std::string> *problems) const {
-  const size_t before = problems->size();
+void ReadNdfSmithModel(const Table &table, BakeSettings *s, std::vector<std::string> *problems) {
   const std::string ndf = RequiredMetadata(table, "ndf", problems),
                     smith = RequiredMetadata(table, "smith", problems);
   if (ndf != "ggx" && ndf != "beckmann") problems->push_back("ndf '" + ndf + "' unknown");
@@ -34,6 +32,12 @@ bool MicrofacetTable::ReadModel(const Table &table, BakeSettings *s,
   s->smith = smith == "separable" ? SmithForm::kSeparable : SmithForm::kCorrelated;
   if (RequiredMetadata(table, "alpha", problems) != "alpha = perceptualRoughness^2")
     problems->push_back("alpha is not perceptualRoughness^2");
+}
+
+bool MicrofacetTable::ReadModel(const Table &table, BakeSettings *s,
+                                std::vector<std::string> *problems) const {
+  const size_t before = problems->size();
+  ReadNdfSmithModel(table, s, problems);
   // The roughness axis is the one a plan narrows; the other (of a 2D
   // table) is mu.
   const bool twoD = PlannedRoughnessAxis() == 1;

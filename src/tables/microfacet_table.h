@@ -11,6 +11,11 @@
 
 namespace lutbake {
 
+// The lobe's NDF and Smith form and alpha = perceptualRoughness^2, read back
+// from a file's metadata (ndf, smith, alpha) into `s`, with the reasons when
+// they are not lutbake's; shared with the rough-dielectric tables.
+void ReadNdfSmithModel(const Table &table, BakeSettings *s, std::vector<std::string> *problems);
+
 class MicrofacetTable : public TableDefinition {
  public:
   std::vector<std::string> ModelOptions() const override { return {"ndf", "smith"}; }
