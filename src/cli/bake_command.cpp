@@ -219,12 +219,8 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
     planMetadata.emplace_back("planSources", sources);
     for (const PlannedTable &t : plan.tables) {
       BakeJob job{t.definition, PlannedSettings(t, settings), t.x, t.y, t.name, planMetadata};
-      if (!t.z.name.empty())
-        job.z = t.z;  // the plan's IORs
-      else
-        t.definition->DepthAxis(
-            job.settings,
-            settings.depthSize > 0 ? settings.depthSize : t.definition->DefaultDepth(), &job.z);
+      // The plan's IORs, or the table's own third axis.
+      job.z = t.z.name.empty() ? DefaultDepthAxis(*t.definition, job.settings) : t.z;
       job.metadata.emplace_back("planMaterials", JoinNames(t.materials));
       jobs.push_back(job);
     }

@@ -70,9 +70,15 @@ void DefaultAxes(const TableDefinition &table, const BakeSettings &s, Axis *x, A
   table.Axes(s, s.SizeFor(table.Name(), table.DefaultSize()), x, y);
 }
 
+Axis DefaultDepthAxis(const TableDefinition &table, const BakeSettings &s) {
+  Axis z;
+  table.DepthAxis(s, s.depthSize > 0 ? s.depthSize : table.DefaultDepth(), &z);
+  return z;
+}
+
 void DefaultAxes(const TableDefinition &table, const BakeSettings &s, Axis *x, Axis *y, Axis *z) {
   DefaultAxes(table, s, x, y);
-  table.DepthAxis(s, s.depthSize > 0 ? s.depthSize : table.DefaultDepth(), z);
+  *z = DefaultDepthAxis(table, s);
 }
 
 PointValue EvaluateTexel(const TableDefinition &definition, const BakeSettings &s,
@@ -91,9 +97,7 @@ Table BakeTable(const TableDefinition &definition, const BakeSettings &s,
 
 Table BakeTableOn(const TableDefinition &definition, const BakeSettings &s, const Axis &x,
                   const Axis &y, const ProgressFn &progress, BakeStats *statsOut) {
-  Axis z;
-  definition.DepthAxis(s, s.depthSize > 0 ? s.depthSize : definition.DefaultDepth(), &z);
-  return BakeTableOn(definition, s, x, y, z, progress, statsOut);
+  return BakeTableOn(definition, s, x, y, DefaultDepthAxis(definition, s), progress, statsOut);
 }
 
 Table BakeTableOn(const TableDefinition &definition, const BakeSettings &s, const Axis &x,

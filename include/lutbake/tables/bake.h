@@ -41,6 +41,9 @@ void FresnelAxes(FresnelModel model, int count, Axis *x, Axis *y);
 // The axes a table has by default (SPEC sections 2 and 3), with the
 // settings' size for it.
 void DefaultAxes(const TableDefinition &table, const BakeSettings &settings, Axis *x, Axis *y);
+// A 3D table's third axis with the settings' depth (count 1 and no name for
+// the others).
+Axis DefaultDepthAxis(const TableDefinition &table, const BakeSettings &settings);
 // With a 3D table's third axis too (count 1 and no name for the others).
 void DefaultAxes(const TableDefinition &table, const BakeSettings &settings, Axis *x, Axis *y,
                  Axis *z);
