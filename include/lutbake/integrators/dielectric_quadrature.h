@@ -54,7 +54,7 @@
 // (graded toward pi/2 and each detected kink by ratio 4, down to sqrt(10
 // tolerance) at a kink, at most pi/2 long) and, where that does not
 // converge, on the fine one (ratio 2, down to sqrt(1e-3 tolerance), at most
-// 0.5 long), keeping the smaller bound; the average uses the fine one.
+// 0.5 long), keeping the smaller bound.
 //
 // The bound. Level k uses n(k) = 5, 7, 10, 14, 19, 25 Gauss nodes per outer and
 // inner panel. The albedo refines its outer panels one by one: each at
@@ -118,9 +118,15 @@ DielectricIntegral IntegrateDielectricAlbedo(NdfKind ndf, SmithForm smith, Diele
                                              double tolerance);
 
 // E_avg: Gauss panels in mu graded toward 0 from min(alpha, 0.01) (ratio 2)
-// and, for eta < 1, toward mu = c_crit from both sides (below it the normal
-// facet reflects totally), E at each node at the same level; bound
-// 2 |V_k - V_{k-1}| + 1e-10 + 0.2 tolerance + the node values' Beckmann cuts.
+// and, for eta < 1, toward mu = c_crit and mu = eta from both sides and
+// toward mu = 1 (where E(mu) is not analytic; the .cpp says why), the
+// albedo at each node by IntegrateDielectricAlbedo to half the tolerance
+// with its own bound. The panels are refined one by one as the albedo's
+// are (levels 5, 7, 10, 14, 19, 25, + 4 nodes); bound 2 sum_p |V_p,k -
+// V_p,k-1| + the nodes' bounds, weighted as the rule weights them, + 1e-10.
+// Measured (GGX correlated glass, tolerance 1e-8, this machine): eta = 1/1.5
+// at r = 0.3 0.9 s (was 5.8 s with common levels on the fine grid), at r =
+// 1 3 s and converged (was 18 s, not converged); eta = 1.5 ~0.05 s.
 DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, DielectricLobes lobes,
                                               double alpha, double eta, double tolerance);
 
