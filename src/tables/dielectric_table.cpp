@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "lutbake/integrators/dielectric_estimator.h"
+#include "lutbake/integrators/gauss_kronrod.h"
+#include "lutbake/models/ndf.h"
 #include "lutbake/tables/bake.h"
 #include "microfacet_table.h"
 #include "sampled_texel.h"
@@ -249,7 +251,81 @@ uint64_t DielectricAverageTable::SamplesPerTexel(const BakeSettings &s) const {
 TableRelations DielectricAverageTable::Relations() const {
   TableRelations r;
   r.averageOf = identity_.averageOf;
+  r.reciprocalMinus = identity_.reciprocalMinus;
   return r;
+}
+
+double DielectricTable::IndexMatchedAlbedo(const BakeSettings &s, double mu, double r) const {
+  if (Lobes() == DielectricLobes::kReflection) return 0.0;
+  // G2(o, -o) / G1(o) with L = mu Lambda(mu): correlated (mu + L) / (mu + 2 L),
+  // separable G1 = mu / (mu + L); 1 at r = 0 and at normal view.
+  const double L = Ndf{s.ndf, AlphaOf(r)}.MuLambda(mu);
+  if (mu == 0.0) return s.smith == SmithForm::kCorrelated ? 0.5 : 0.0;
+  return s.smith == SmithForm::kCorrelated ? (mu + L) / (mu + 2.0 * L) : mu / (mu + L);
+}
+
+double DielectricTable::IndexMatchedAverage(const BakeSettings &s, double r) const {
+  if (Lobes() == DielectricLobes::kReflection) return 0.0;
+  // Breaks graded toward mu = 0, where Lambda varies on the scale alpha.
+  std::vector<double> breaks = {0.0};
+  for (double m = std::max(AlphaOf(r), 1e-6); m < 1.0; m *= 4.0) breaks.push_back(m);
+  breaks.push_back(1.0);
+  const QuadratureResultN<1> q = IntegrateAdaptiveN<1>(
+      [&](double mu) { return std::array<double, 1>{2.0 * mu * IndexMatchedAlbedo(s, mu, r)}; },
+      breaks, 1e-13);
+  return q.value[0];
+}
+
+std::optional<SliceClosedForm> DielectricAlbedoTable::SliceClosed(const BakeSettings &s) const {
+  SliceClosedForm f;
+  f.subject = std::string(Name()) + " at eta = 1";
+  f.axis = 2;
+  f.at = 1.0;
+  if (Lobes() == DielectricLobes::kReflection) {
+    f.formula = "0 (F = 0 on every facet)";
+  } else {
+    f.formula =
+        s.smith == SmithForm::kCorrelated
+            ? "(1 + Lambda(mu)) / (1 + 2 Lambda(mu)) (every facet passes o straight through)"
+            : "G1(mu) (every facet passes o straight through)";
+  }
+  f.value = [this, s](double mu, double r) { return IndexMatchedAlbedo(s, mu, r); };
+  return f;
+}
+
+std::vector<LimitClaim> DielectricAlbedoTable::Limits(const BakeSettings &) const {
+  LimitClaim c;
+  c.subject = std::string(Name()) + " as r -> 0";
+  c.formula = Lobes() == DielectricLobes::kReflection
+                  ? "F(mu, eta), the smooth interface's reflectance"
+                  : "1 (a smooth interface reflects F and transmits 1 - F)";
+  c.axis = 1;
+  // alpha = 1e-6: the facets tilt by ~1e-6, which moves the albedo by about
+  // that much, except within ~sqrt(alpha) of the critical cosine, where the
+  // smooth reflectance has a square-root branch point (left out).
+  c.near = 1e-3;
+  c.slack = 1e-6;
+  c.slackText = "alpha = 1e-6, the facets' tilt";
+  const DielectricLobes lobes = Lobes();
+  c.value = [lobes](double mu, double eta) { return DielectricSmoothAlbedo(lobes, eta, mu); };
+  c.excluded = [](double mu, double eta) {
+    if (eta >= 1.0) return false;
+    return std::abs(mu - std::sqrt((1.0 - eta) * (1.0 + eta))) < 1e-3;
+  };
+  return {c};
+}
+
+std::optional<SliceClosedForm> DielectricAverageTable::SliceClosed(const BakeSettings &s) const {
+  SliceClosedForm f;
+  f.subject = std::string(Name()) + " at eta = 1";
+  f.axis = 1;
+  f.at = 1.0;
+  f.formula = Lobes() == DielectricLobes::kReflection
+                  ? "0 (F = 0 on every facet)"
+                  : "2 integral_0^1 G2(o, -o) / G1(o) mu dmu (every facet passes o straight "
+                    "through)";
+  f.value = [this, s](double r, double) { return IndexMatchedAverage(s, r); };
+  return f;
 }
 
 HeaderText DielectricAverageTable::Header(const Table &) const {

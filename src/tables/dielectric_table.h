@@ -60,6 +60,16 @@ class DielectricTable : public TableDefinition {
   // Which lobes the table integrates.
   virtual DielectricLobes Lobes() const = 0;
 
+  // The index-matched interface (eta = 1): F = 0 and every facet passes o
+  // straight through (i_t = -o), so reflection gives 0 and reflection plus
+  // transmission G2(o, -o) / G1(o) = (1 + Lambda(mu)) / (1 + 2 Lambda(mu))
+  // correlated, G1(mu) separable (dielectric.h). At mu on this table's NDF
+  // and Smith form.
+  double IndexMatchedAlbedo(const BakeSettings &s, double mu, double r) const;
+  // 2 integral_0^1 IndexMatchedAlbedo mu dmu (adaptive Gauss-Kronrod to
+  // 1e-13).
+  double IndexMatchedAverage(const BakeSettings &s, double r) const;
+
  protected:
   static PointCoordinate RoughnessCoordinate();
   static PointCoordinate MuCoordinate();
@@ -94,6 +104,11 @@ class DielectricAlbedoTable : public DielectricTable {
   PointValue Evaluate3D(const BakeSettings &s, double mu, double r, double eta) const override {
     return EvaluateAlbedo(s, mu, r, eta);
   }
+  // The eta = 1 slice in closed form, and the smooth limit r -> 0 (the
+  // smooth interface's albedo, DielectricSmoothAlbedo) that the integrator
+  // reaches at r = 1e-3.
+  std::optional<SliceClosedForm> SliceClosed(const BakeSettings &s) const override;
+  std::vector<LimitClaim> Limits(const BakeSettings &s) const override;
 };
 
 // The averages (glass_Eavg, spec_Eavg) differ only in what they are: each
@@ -105,6 +120,10 @@ class DielectricAverageTable final : public DielectricTable {
     uint64_t seedId;
     DielectricLobes lobes;
     const char *averageOf;  // the 3D table it averages
+    // The reflection-only average whose difference from this one is the
+    // transmitted part that reciprocity relates between eta and 1/eta ("" for
+    // the reflection-only table itself).
+    const char *reciprocalMinus;
     const char *summary;
     const char *lookupComment;
     PlanRole role;
@@ -129,6 +148,8 @@ class DielectricAverageTable final : public DielectricTable {
   // table's rows, whose texels it holds to the adaptive rule.
   Estimator ReferenceEstimator() const override { return Estimator::kQuadrature; }
   TableRelations Relations() const override;
+  // The eta = 1 slice: 0 for reflection, IndexMatchedAverage for glass.
+  std::optional<SliceClosedForm> SliceClosed(const BakeSettings &s) const override;
   HeaderText Header(const Table &) const override;
 
  private:

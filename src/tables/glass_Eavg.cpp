@@ -14,7 +14,7 @@ namespace lutbake {
 
 const TableDefinition &GlassAverageAlbedoTable() {
   static const DielectricAverageTable table(
-      {"glass_Eavg", 7, DielectricLobes::kReflectionAndTransmission, "glass_E",
+      {"glass_Eavg", 7, DielectricLobes::kReflectionAndTransmission, "glass_E", "spec_Eavg",
        "average albedo of rough glass (reflection + transmission), 2 integral glass_E mu dmu, over "
        "(r, eta)",
        "Average albedo of rough glass (reflection + transmission) at perceptual roughness r and "

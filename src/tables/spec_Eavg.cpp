@@ -14,7 +14,7 @@ namespace lutbake {
 
 const TableDefinition &SpecularAverageAlbedoTable() {
   static const DielectricAverageTable table(
-      {"spec_Eavg", 9, DielectricLobes::kReflection, "spec_E",
+      {"spec_Eavg", 9, DielectricLobes::kReflection, "spec_E", "",
        "average albedo of a rough dielectric's reflection, 2 integral spec_E mu dmu, over (r, eta)",
        "Average albedo of a rough dielectric's reflection at perceptual roughness r and relative "
        "IOR eta.",

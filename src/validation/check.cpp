@@ -131,6 +131,8 @@ class Checker {
         CheckPoints(t);
         CheckMonotonic(t);
         CheckClosedForm(t);
+        CheckSliceClosedForm(t);
+        CheckLimits(t);
       }
       // The relations the definitions declare, each kind in turn.
       for (auto &[index, t] : tables_)
@@ -144,6 +146,8 @@ class Checker {
         if (t.def->Relations().albedoScaling && t.usable) CheckAlbedoScaling(t);
       for (auto &[index, t] : tables_)
         if (!t.def->Relations().atMostTable.empty()) CheckAtMost(t);
+      for (auto &[index, t] : tables_)
+        if (!t.def->Relations().reciprocalMinus.empty()) CheckReciprocity(t);
     }
     report_.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -753,7 +757,198 @@ class Checker {
           closed->subject + " = " + closed->formula + " at every texel, to float rounding");
   }
 
+  // The closed form a slice of the table takes (the dielectric tables at
+  // eta = 1), texel by texel within the texel's own claim.
+  void CheckSliceClosedForm(const Loaded &t) {
+    const std::optional<SliceClosedForm> closed = t.def->SliceClosed(t.model);
+    if (!closed || !t.usable) return;
+    const Table &table = t.table;
+    const Axis &axis = closed->axis == 1 ? table.y : table.z;
+    const int count = closed->axis == 1 ? table.height() : table.depth();
+    int slice = -1;
+    for (int k = 0; k < count; ++k)
+      if (axis.TexelCenter(k) == closed->at) slice = k;
+    const std::string name = Name(*t.def);
+    if (slice < 0) {
+      Add(name, "slice", CheckStatus::kSkipped,
+          closed->subject + " = " + closed->formula + ": the table has no slice at " + axis.name +
+              " = " + Short(closed->at));
+      return;
+    }
+    double worst = 0.0, worstExcess = -1.0, excessValue = 0.0, excessAllowed = 0.0;
+    std::vector<std::pair<std::string, double>> at, atExcess;
+    int texels = 0;
+    const int height = closed->axis == 1 ? 1 : table.height();
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < table.width(); ++x) {
+        const int iy = closed->axis == 1 ? slice : y, iz = closed->axis == 1 ? 0 : slice;
+        const size_t i = table.index(x, iy, iz, 0);
+        const double a = table.x.TexelCenter(x),
+                     b = closed->axis == 1 ? 0.0 : table.y.TexelCenter(y);
+        const double exact = closed->value(a, b);
+        const double dev = std::abs(table.values[i] - exact);
+        // The hard claim of the texel (CheckTexels), the closed form's own
+        // integration (1e-13 for an average) and rounding.
+        const double allowed = std::max(t.statedErrorMax, t.Bound(i)) + 1e-12 +
+                               (t.boundsCoverStorage ? 0.0 : FloatRounding(exact));
+        const auto where =
+            At(table, table.x.TexelCenter(x), table.y.TexelCenter(iy), table.z.TexelCenter(iz));
+        ++texels;
+        if (dev > worst || at.empty()) worst = dev, at = where;
+        if (dev - allowed > worstExcess)
+          worstExcess = dev - allowed, excessValue = dev, excessAllowed = allowed, atExcess = where;
+      }
+    if (worstExcess > 0.0)
+      Add(name, "slice", CheckStatus::kFail,
+          closed->subject + " departs from " + closed->formula + " by " + Short(excessValue) +
+              " at " + Where(atExcess) + ", more than the texel's bound " + Short(excessAllowed),
+          excessValue, excessAllowed, atExcess);
+    else
+      Add(name, "slice", CheckStatus::kPass,
+          closed->subject + " = " + closed->formula + " at all " + std::to_string(texels) +
+              " texels of the slice, within their bounds: max |table - closed form| " +
+              Short(worst) + " at " + Where(at),
+          worst, 0.0, at);
+  }
+
+  // The limits the definition's integrator reaches where the table has no
+  // texel (the smooth interface): the panel rule at the claim's coordinate,
+  // at the texel centres of the other axes.
+  void CheckLimits(const Loaded &t) {
+    if (!t.usable) return;
+    const Table &table = t.table;
+    for (const LimitClaim &claim : t.def->Limits(t.model)) {
+      BakeSettings s = t.model;
+      s.estimator = Estimator::kQuadrature;
+      s.tolerance = 1e-9;
+      // The two other axes, in order.
+      const Axis &a = claim.axis == 0 ? table.y : table.x;
+      const Axis &b = claim.axis == 2 ? table.y : table.z;
+      struct Item {
+        double a, b;
+        PointValue v;
+      };
+      std::vector<Item> items;
+      size_t left = 0;
+      for (int j = 0; j < b.count; ++j)
+        for (int i = 0; i < a.count; ++i) {
+          const double va = a.TexelCenter(i), vb = b.TexelCenter(j);
+          if (claim.excluded && claim.excluded(va, vb)) {
+            ++left;
+            continue;
+          }
+          items.push_back({va, vb, {}});
+        }
+      tbb::parallel_for(size_t{0}, items.size(), [&](size_t k) {
+        Item &it = items[k];
+        double c[3] = {it.a, it.b, 0.0};
+        // Put the limit's coordinate in its place.
+        double p[3];
+        for (int n = 0, m = 0; n < 3; ++n) p[n] = n == claim.axis ? claim.near : c[m++];
+        it.v = t.def->Evaluate3D(s, p[0], p[1], p[2]);
+      });
+      double worst = 0.0, worstExcess = -1.0, excessValue = 0.0, excessAllowed = 0.0;
+      std::vector<std::pair<std::string, double>> at, atExcess;
+      for (const Item &it : items) {
+        const double exact = claim.value(it.a, it.b);
+        const double dev = std::abs(it.v.value[0] - exact);
+        const double allowed = it.v.error[0] + claim.slack;
+        double p[3], c[2] = {it.a, it.b};
+        for (int n = 0, m = 0; n < 3; ++n) p[n] = n == claim.axis ? claim.near : c[m++];
+        const auto where = At(table, p[0], p[1], p[2]);
+        if (dev > worst || at.empty()) worst = dev, at = where;
+        if (dev - allowed > worstExcess)
+          worstExcess = dev - allowed, excessValue = dev, excessAllowed = allowed, atExcess = where;
+      }
+      const std::string detail =
+          "the integrator at " +
+          (claim.axis == 0   ? table.x
+           : claim.axis == 1 ? table.y
+                             : table.z)
+              .name +
+          " = " + Short(claim.near) + " on " + std::to_string(items.size()) +
+          " texel centres of the other axes" +
+          (left ? " (" + std::to_string(left) + " beside a branch point left out)"
+                : std::string()) +
+          ": max |value - limit| " + Short(worst) + " at " + Where(at) + "; allowed its bound + " +
+          claim.slackText;
+      if (worstExcess > 0.0)
+        Add(Name(*t.def), "limit", CheckStatus::kFail,
+            claim.subject + " is " + claim.formula + ", but " + detail + "; off by " +
+                Short(excessValue) + " at " + Where(atExcess),
+            excessValue, excessAllowed, atExcess);
+      else
+        Add(Name(*t.def), "limit", CheckStatus::kPass,
+            claim.subject + " = " + claim.formula + ": " + detail, worst, 0.0, at);
+    }
+  }
+
   // ---- across tables ---------------------------------------------------
+
+  // Reciprocity between the two sides of an interface: T = G - S (glass
+  // minus reflection averages) obeys T(eta) = eta^2 T(1 / eta), at every
+  // roughness texel and every pair of eta slices both tables hold.
+  void CheckReciprocity(const Loaded &g) {
+    const std::string &minusName = g.def->Relations().reciprocalMinus;
+    const Loaded *sp = Usable(minusName);
+    if (!sp || !g.usable) return;
+    const std::string subject = std::string(g.def->Name()) + "-" + minusName + suffix_;
+    if (!SameModel(g, *sp, subject, "reciprocity")) return;
+    const Table &tg = g.table, &ts = sp->table;
+    if (!(tg.x.count == ts.x.count && tg.x.min == ts.x.min && tg.x.max == ts.x.max &&
+          tg.x.name == ts.x.name && tg.x.nodes == ts.x.nodes && tg.y.nodes == ts.y.nodes &&
+          tg.y.count == ts.y.count && tg.y.min == ts.y.min && tg.y.max == ts.y.max)) {
+      Add(subject, "reciprocity", CheckStatus::kSkipped,
+          "the two tables do not share their axes: nothing to compare texel by texel");
+      return;
+    }
+    const auto rounding = [&](const Loaded &t, double v) {
+      return t.boundsCoverStorage ? 0.0 : FloatRounding(v);
+    };
+    double worst = 0.0, worstExcess = -1.0, excessValue = 0.0, excessAllowed = 0.0;
+    std::vector<std::pair<std::string, double>> at, atExcess;
+    int pairs = 0;
+    for (int j = 0; j < tg.height(); ++j) {
+      const double eta = tg.y.TexelCenter(j);
+      if (!(eta > 1.0)) continue;
+      int partner = -1;
+      for (int k = 0; k < tg.height(); ++k)
+        if (std::abs(eta * tg.y.TexelCenter(k) - 1.0) < 1e-12) partner = k;
+      if (partner < 0) continue;
+      for (int x = 0; x < tg.width(); ++x) {
+        const size_t a = tg.index(x, j, 0), b = tg.index(x, partner, 0);
+        const double gA = tg.values[a], sA = ts.values[a], gB = tg.values[b], sB = ts.values[b];
+        const double dev = std::abs((gA - sA) - eta * eta * (gB - sB));
+        const double allowed =
+            std::max(g.statedErrorMax, g.Bound(a)) + std::max(sp->statedErrorMax, sp->Bound(a)) +
+            rounding(g, gA) + rounding(*sp, sA) +
+            eta * eta *
+                (std::max(g.statedErrorMax, g.Bound(b)) +
+                 std::max(sp->statedErrorMax, sp->Bound(b)) + rounding(g, gB) + rounding(*sp, sB));
+        const auto where = At(tg, tg.x.TexelCenter(x), eta);
+        ++pairs;
+        if (dev > worst || at.empty()) worst = dev, at = where;
+        if (dev - allowed > worstExcess)
+          worstExcess = dev - allowed, excessValue = dev, excessAllowed = allowed, atExcess = where;
+      }
+    }
+    const std::string claim =
+        "T = " + std::string(g.def->Name()) + " - " + minusName + " obeys T(eta) = eta^2 T(1/eta)";
+    if (pairs == 0)
+      Add(subject, "reciprocity", CheckStatus::kSkipped,
+          claim + ": the eta axis holds no pair eta, 1/eta");
+    else if (worstExcess > 0.0)
+      Add(subject, "reciprocity", CheckStatus::kFail,
+          claim + ", but it is off by " + Short(excessValue) + " at " + Where(atExcess) +
+              ", more than the " + Short(excessAllowed) + " the four texels' bounds allow",
+          excessValue, excessAllowed, atExcess);
+    else
+      Add(subject, "reciprocity", CheckStatus::kPass,
+          claim + " at " + std::to_string(pairs) +
+              " texel pairs, within the four texels' bounds: max |T(eta) - eta^2 T(1/eta)| " +
+              Short(worst) + " at " + Where(at),
+          worst, 0.0, at);
+  }
 
   // The usable table of this set whose definition is called `name`.
   const Loaded *Usable(const std::string &name) const {

@@ -23,6 +23,7 @@
 #include "lutbake/models/ndf.h"
 #include "lutbake/tables/bake.h"
 #include "lutbake/tables/lookup.h"
+#include "lutbake/validation/check.h"
 #include "support/cli_run.h"
 #include "support/csv.h"
 
@@ -197,6 +198,77 @@ TEST(GlassTables, SmallBakePassesCheck) {
        at = check.output.find("trilinear lookup", at + 1))
     ++trilinear;
   EXPECT_EQ(trilinear, 2u) << check.output;
+  fs::remove_all(dir);
+}
+
+// Rewrites value `index` of a float32 .bin file (data offset at byte 12).
+void PatchBin(const fs::path &path, size_t index, float value) {
+  std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
+  uint32_t dataOffset = 0;
+  f.seekg(12);
+  f.read(reinterpret_cast<char *>(&dataOffset), 4);
+  f.seekp(dataOffset + 4 * static_cast<std::streamoff>(index));
+  f.write(reinterpret_cast<const char *>(&value), 4);
+}
+
+const CheckResult *Find(const CheckReport &r, const std::string &subject,
+                        const std::string &check) {
+  for (const CheckResult &c : r.results)
+    if (c.subject == subject && c.check == check) return &c;
+  return nullptr;
+}
+
+// `check` holds the eta = 1 slice to its closed form, the integrator to the
+// smooth limit, and the averages of both sides to reciprocity; a texel moved
+// by 20x the stated bound on the slice, or on one side of a reciprocal pair,
+// fails the claim by name.
+TEST(GlassTables, CheckHoldsSliceLimitAndReciprocity) {
+  const fs::path dir = test::Scratch("glass_claims");
+  // eta-size 3: eta = 1/3, 1, 3.
+  test::CommandResult bake = Lutbake("bake --out " + dir.string() +
+                                     " --tables glass_E,spec_E --size 4 --eta-size 3 "
+                                     "--tolerance 1e-6 --format bin");
+  ASSERT_EQ(bake.status, 0) << bake.output;
+  bake = Lutbake("bake --out " + dir.string() +
+                 " --tables glass_Eavg,spec_Eavg --size 2 --eta-size 3 --tolerance 1e-6 "
+                 "--format bin");
+  ASSERT_EQ(bake.status, 0) << bake.output;
+  CheckOptions quick;
+  quick.randomPoints = 2;
+  const auto statusOf = [](const CheckReport &r, const std::string &subject,
+                           const std::string &check) {
+    const CheckResult *c = Find(r, subject, check);
+    EXPECT_NE(c, nullptr) << subject << " " << check;
+    return c ? c->status : CheckStatus::kSkipped;
+  };
+  {
+    const CheckReport r = CheckBakedSet(dir.string(), quick);
+    for (const CheckResult &c : r.results)
+      EXPECT_NE(c.status, CheckStatus::kFail) << c.subject << " " << c.check << ": " << c.detail;
+    for (const char *t : {"glass_E", "spec_E", "glass_Eavg", "spec_Eavg"})
+      EXPECT_EQ(statusOf(r, t, "slice"), CheckStatus::kPass) << t;
+    EXPECT_EQ(statusOf(r, "glass_E", "limit"), CheckStatus::kPass);
+    EXPECT_EQ(statusOf(r, "spec_E", "limit"), CheckStatus::kPass);
+    EXPECT_EQ(statusOf(r, "glass_Eavg-spec_Eavg", "reciprocity"), CheckStatus::kPass);
+  }
+  // glass_E at (mu 3/8, r 5/8, eta = 1), and glass_Eavg at (r 3/4, eta 3).
+  const Table glass = ReadBinaryTable((dir / "glass_E.bin").string());
+  ASSERT_EQ(glass.z.TexelCenter(1), 1.0);
+  const size_t onSlice = glass.index(1, 2, 1, 0);
+  PatchBin(dir / "glass_E.bin", onSlice,
+           static_cast<float>(glass.values[onSlice] - 20.0 * glass.MaxError()));
+  const Table average = ReadBinaryTable((dir / "glass_Eavg.bin").string());
+  ASSERT_EQ(average.y.TexelCenter(2), 3.0);
+  const size_t side = average.index(1, 2, 0, 0);
+  PatchBin(dir / "glass_Eavg.bin", side,
+           static_cast<float>(average.values[side] - 20.0 * average.MaxError()));
+  const CheckReport r = CheckBakedSet(dir.string(), quick);
+  EXPECT_FALSE(r.passed());
+  EXPECT_EQ(statusOf(r, "glass_E", "slice"), CheckStatus::kFail);
+  EXPECT_EQ(statusOf(r, "glass_Eavg-spec_Eavg", "reciprocity"), CheckStatus::kFail);
+  // The untouched tables' claims still hold.
+  EXPECT_EQ(statusOf(r, "spec_E", "slice"), CheckStatus::kPass);
+  EXPECT_EQ(statusOf(r, "glass_E", "limit"), CheckStatus::kPass);
   fs::remove_all(dir);
 }
 

@@ -76,6 +76,34 @@ struct ClosedForm {
   std::function<double(double x, double y)> value;
 };
 
+// A closed form a table takes where one of its axes sits at one value (the
+// rough-dielectric tables at eta = 1): every texel of that slice must equal
+// it within the texel's own bound. `value` takes the other coordinates in
+// axis order (x, then y or z; a 2D table's second is 0).
+struct SliceClosedForm {
+  std::string subject;  // "glass_E at eta = 1"
+  std::string formula;  // "(1 + Lambda(mu)) / (1 + 2 Lambda(mu))"
+  int axis = 2;         // 1 = y, 2 = z
+  double at = 1.0;      // the axis value of the slice
+  std::function<double(double a, double b)> value;
+};
+
+// A limit the table's integrator reaches where its axes hold no texel (the
+// smooth interface, r -> 0): `check` evaluates the definition at `near`
+// on that axis, at the texel centres of the other axes, and compares with
+// `value` there within the value's bound plus `slack`; points where
+// `excluded` is true (a branch point of the closed form) are left out.
+struct LimitClaim {
+  std::string subject;  // "glass_E as r -> 0"
+  std::string formula;  // "1 (a smooth interface scatters everything)"
+  int axis = 1;         // the axis that goes to the limit
+  double near = 1e-3;   // the coordinate evaluated
+  double slack = 0.0;   // what the distance from the limit may add
+  std::string slackText;
+  std::function<double(double a, double b)> value;
+  std::function<bool(double a, double b)> excluded;
+};
+
 // Relations to other tables (by name) that `check` verifies when both are in
 // a baked set, and that decide which helper headers a bake writes.
 struct TableRelations {
@@ -97,6 +125,11 @@ struct TableRelations {
   std::string atMostTable;
   int atMostChannel = 0;
   double atMostFactor = 1.0;
+  // The transmitted part T = this - reciprocalMinus (glass_Eavg -
+  // spec_Eavg) obeys T(eta) = eta^2 T(1 / eta) over a y axis of eta
+  // (reciprocity of the BTDF, README "Rough glass"); checked at every pair
+  // of slices eta, 1 / eta that both tables hold.
+  std::string reciprocalMinus;
 };
 
 // Why a bake plan (plans/plan.h) needs a table.
@@ -224,6 +257,8 @@ class TableDefinition {
   virtual ValueClaim Range(const BakeSettings &) const { return {0.0, 1.0, false, "in [0, 1]"}; }
   virtual std::optional<MonotonicClaim> Monotonic(const BakeSettings &) const { return {}; }
   virtual std::optional<ClosedForm> Closed(const BakeSettings &) const { return {}; }
+  virtual std::optional<SliceClosedForm> SliceClosed(const BakeSettings &) const { return {}; }
+  virtual std::vector<LimitClaim> Limits(const BakeSettings &) const { return {}; }
   virtual TableRelations Relations() const { return {}; }
 
   // ---- uses -----------------------------------------------------------
