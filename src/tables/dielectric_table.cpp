@@ -328,10 +328,37 @@ std::optional<SliceClosedForm> DielectricAverageTable::SliceClosed(const BakeSet
   return f;
 }
 
-HeaderText DielectricAverageTable::Header(const Table &) const {
+HeaderText DielectricAverageTable::Header(const Table &table) const {
   HeaderText text;
   AddNotes(&text);
   text.lookupComment = identity_.lookupComment;
+  const std::string name = table.Name();
+  if (Lobes() == DielectricLobes::kReflection) {
+    // A coat under uniform (cosine-weighted) light passes 1 - spec_Eavg of it
+    // to the base: 2 integral (1 - spec_E) mu dmu.
+    text.helpers = [name](const std::string &lookup) {
+      return "// The fraction of uniform (cosine-weighted) light that a dielectric coat lets\n"
+             "// through to the layer beneath: 1 - Eavg = 2 integral (1 - E(mu)) mu dmu.\n"
+             "inline float diffuse_transmittance_" +
+             name + "(float r, float eta) {\n  return 1.0f - " + lookup + "(r, eta);\n}\n\n";
+    };
+  } else {
+    // The Kulla-Conty lobe built from glass_E and this average: its cosine
+    // integral over a hemisphere of light directions is exactly 1 - E_o.
+    text.helpers = [name](const std::string &lookup) {
+      return "// The Kulla-Conty multiple-scattering lobe of rough glass, from E = glass_E at\n"
+             "// the view (E_o) and the light (E_i) and this average:\n"
+             "//   f_ms = (1 - E_o) (1 - E_i) / (pi (1 - Eavg)),\n"
+             "// whose integral of f_ms |mu_i| over a hemisphere of i is exactly 1 - E_o, the\n"
+             "// energy single scattering loses. How it is split between the reflected and the\n"
+             "// transmitted hemisphere is the engine's choice. 0 where Eavg = 1 (nothing lost).\n"
+             "inline float ms_lobe_" +
+             name + "(float E_o, float E_i, float r, float eta) {\n  const float lost = 1.0f - " +
+             lookup +
+             "(r, eta);\n  return lost > 0.0f ? (1.0f - E_o) * (1.0f - E_i) / "
+             "(3.14159265358979f * lost) : 0.0f;\n}\n\n";
+    };
+  }
   return text;
 }
 

@@ -337,8 +337,14 @@ TEST(GlassTables, HeaderHelpersCompileAndLookUp) {
                                            " --tables glass_E,spec_E --size 4 --eta-size 3 "
                                            "--format header");
   ASSERT_EQ(bake.status, 0) << bake.output;
+  const test::CommandResult averages =
+      Lutbake("bake --out " + dir.string() +
+              " --tables glass_Eavg,spec_Eavg --size 2 --eta-size 3 --tolerance 1e-6 "
+              "--format header");
+  ASSERT_EQ(averages.status, 0) << averages.output;
   std::ofstream(dir / "main.cpp")
       << "#include <cmath>\n#include <cstdio>\n#include \"glass_E.h\"\n#include \"spec_E.h\"\n"
+         "#include \"glass_Eavg.h\"\n#include \"spec_Eavg.h\"\n"
          "int main() {\n  int fail = 0;\n  using namespace lutbake_luts;\n"
          "  // At texel centres the lookup is the texel; the helpers are 1/E and 1 - E.\n"
          "  for (std::size_t z = 0; z < glass_E_table::kDepth; ++z) {\n"
@@ -350,6 +356,17 @@ TEST(GlassTables, HeaderHelpersCompileAndLookUp) {
          "    const float s = lookup_spec_E(0.375f, 0.625f, eta);\n"
          "    if (base_weight_spec_E(0.375f, 0.625f, eta) != 1.0f - s) ++fail;\n"
          "    if (!(s >= 0.0f && s <= e)) ++fail;\n"
+         "  }\n"
+         "  // The averages' helpers: 1 - spec_Eavg, and the Kulla-Conty lobe\n"
+         "  // (1 - E_o) (1 - E_i) / (pi (1 - glass_Eavg)), 0 at eta = 1, r = 1/4 if nothing is "
+         "lost.\n"
+         "  for (float eta : {1.0f / 3.0f, 1.0f, 3.0f}) {\n"
+         "    const float s = lookup_spec_Eavg(0.75f, eta);\n"
+         "    if (diffuse_transmittance_spec_Eavg(0.75f, eta) != 1.0f - s) ++fail;\n"
+         "    const float lost = 1.0f - lookup_glass_Eavg(0.75f, eta);\n"
+         "    if (!(lost > 0.0f)) ++fail;\n"
+         "    const float f = ms_lobe_glass_Eavg(0.9f, 0.8f, 0.75f, eta);\n"
+         "    if (std::fabs(f * 3.14159265f * lost - 0.1f * 0.2f) > 1e-6f) ++fail;\n"
          "  }\n  std::printf(\"%d failures\\n\", fail);\n  return fail == 0 ? 0 : 1;\n}\n";
   LUTBAKE_EXPECT_COMPILES_AND_RUNS(dir, "c++17");
   fs::remove_all(dir);
