@@ -583,6 +583,15 @@ DielectricIntegral IntegrateDielectricAlbedo(NdfKind ndf, SmithForm smith, Diele
     out.exact = out.converged = true;
     return out;
   }
+  if (mu_o == 0.0 && eta == 1.0 && lobes == DielectricLobes::kReflectionAndTransmission) {
+    // Index-matched, grazing: every facet passes o straight through to
+    // i_t = -o, on the horizon itself, where G2 is 0; the limit mu_o -> 0 of
+    // G2(o, -o) / G1(o) = (mu + L) / (mu + 2 L) (correlated) is 1/2, of
+    // G1(mu) (separable) 0. The grazing limit is what mu_o = 0 stands for.
+    out.value = smith == SmithForm::kCorrelated ? 0.5 : 0.0;
+    out.exact = out.converged = true;
+    return out;
+  }
   const Setup s = MakeSetup(ndf, smith, lobes, alpha, mu_o, eta);
   // The coarse grid first; where it does not converge (some panel's
   // difference stays large at the finest level: a few grazing views at

@@ -159,6 +159,10 @@ PointValue DielectricTable::EvaluateAlbedo(const BakeSettings &s, double mu, dou
   if (!(mu >= 0.0 && mu <= 1.0))
     throw std::domain_error("mu " + FormatDouble(mu) + " is outside [0, 1]");
   const DielectricLobes lobes = Lobes();
+  // Grazing and index-matched: the closed form's limit (the integrators see
+  // i_t = -o on the horizon, where G2 is 0; dielectric_quadrature.cpp).
+  if (mu == 0.0 && eta == 1.0 && alpha > 0.0)
+    return FromIntegral(IntegrateDielectricAlbedo(s.ndf, s.smith, lobes, alpha, mu, eta, 1e-8));
   // The adaptive rule integrates over the light direction, where the
   // transmitted lobe narrows to a delta at -o as eta -> 1: it cannot find it
   // there. Within 0.05 of eta = 1 the panel rule (over the half vector, where

@@ -231,6 +231,16 @@ TEST(DielectricQuadrature, GrazingLimit) {
       EXPECT_TRUE(std::isfinite(at0.value));
       EXPECT_NEAR(near.value, at0.value, 1e-6);
     }
+  // Index-matched: mu_o = 0 is the limit of (mu + L) / (mu + 2 L), 1/2 (G1 ->
+  // 0 separable), which the rule approaches from mu_o = 1e-8.
+  for (SmithForm smith : {SmithForm::kCorrelated, SmithForm::kSeparable}) {
+    const DielectricIntegral at0 =
+        IntegrateDielectricAlbedo(NdfKind::kGgx, smith, kGlass, 0.25, 0.0, 1.0, 1e-8);
+    const DielectricIntegral near =
+        IntegrateDielectricAlbedo(NdfKind::kGgx, smith, kGlass, 0.25, 1e-8, 1.0, 1e-8);
+    EXPECT_EQ(at0.value, smith == SmithForm::kCorrelated ? 0.5 : 0.0);
+    EXPECT_NEAR(near.value, at0.value, 1e-6);
+  }
 }
 
 // The transmitted averages: T_avg(eta) = eta^2 T_avg(1/eta), T_avg = glass
