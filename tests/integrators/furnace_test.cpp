@@ -80,6 +80,17 @@ TEST(Furnace, BlinnPhongExactNormalisationIsOneAtNormalIncidence) {
   }
 }
 
+TEST(Furnace, BlinnPhongAverageIsFourPiCOverNPlusFour) {
+  // Measured, then held: the hemispherical average of c cos^n(theta_h) is
+  // 4 pi c / (n + 4) (n = 0: Lambert's 1).
+  for (double n : {0.0, 1.0, 7.0, 64.0}) {
+    FurnaceModel m = Model(FurnaceModelKind::kBlinnPhong);
+    m.blinnPhong = BlinnPhongNormalisation::kNone;
+    const FurnaceValue avg = FurnaceIntegrator(m, n).Average();
+    EXPECT_NEAR(avg.value, 4.0 * kPi / (n + 4.0), avg.error) << n;
+  }
+}
+
 TEST(Furnace, EonIsOneAndFonIsItsClosedForm) {
   // At mu = 0, E_F = 1 exactly and the reference implementation's clamp
   // max(1e-7, 1 - E_F(mu_o)) gives the lobe f_ms an albedo of 1e-7 (times
