@@ -6,6 +6,7 @@
 #include "bake_command.h"
 #include "check_command.h"
 #include "eval_command.h"
+#include "furnace_command.h"
 #include "lutbake/tables/bake.h"
 #include "plan_command.h"
 #include "report_command.h"
@@ -33,7 +34,7 @@ int main(int argc, char **argv) {
       "  lutbake plan --scene car.gltf   # what a scene needs, and why\n"
       "  lutbake eval --table E --mu 0.5 --roughness 0.3\n"
       "  lutbake report --out report    # error against time of every estimator\n"
-      "Run 'lutbake COMMAND --help' (bake, plan, check, eval, report) for their options.");
+      "Run 'lutbake COMMAND --help' (bake, plan, check, eval, report, furnace) for their options.");
   lutbake::cli::BakeOptions bakeOptions;
   CLI::App *bake =
       app.add_subcommand("bake", "Bake tables into a directory (EXR, .bin, C++ header)");
@@ -56,6 +57,11 @@ int main(int argc, char **argv) {
   CLI::App *report = app.add_subcommand(
       "report", "Measure real error against run time for every estimator (csv, md, svg)");
   lutbake::cli::SetupReportCommand(*report, reportOptions);
+
+  lutbake::cli::FurnaceOptions furnaceOptions;
+  CLI::App *furnace = app.add_subcommand(
+      "furnace", "The white furnace of a classic reflection model: albedo, average, pictures");
+  lutbake::cli::SetupFurnaceCommand(*furnace, furnaceOptions);
 
   std::string commandLine = "lutbake";
   for (int i = 1; i < argc; ++i) commandLine += " " + QuoteArgument(argv[i]);
@@ -84,6 +90,7 @@ int main(int argc, char **argv) {
     if (eval->parsed()) return lutbake::cli::RunEval(evalOptions, *eval);
     if (check->parsed()) return lutbake::cli::RunCheck(checkOptions);
     if (report->parsed()) return lutbake::cli::RunReport(reportOptions);
+    if (furnace->parsed()) return lutbake::cli::RunFurnace(furnaceOptions, *furnace);
   } catch (const std::exception &e) {
     std::cerr << "lutbake: " << e.what() << "\n";
     return 1;
