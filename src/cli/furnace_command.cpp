@@ -304,10 +304,21 @@ int RunFurnace(const FurnaceOptions &o, CLI::App &app) {
   for (size_t p = 0; p < settings.parameters.size(); ++p)
     std::printf("%12.6g %31.15f %10.2e\n", settings.parameters[p], result.average[p].value,
                 result.average[p].error);
-  std::printf("worst gain %.6g at (%s, mu) = (%.6g, %.6g); worst loss %.6g at (%.6g, %.6g)\n",
-              result.gain.amount, spec.parameterName.empty() ? "-" : spec.parameterName.c_str(),
-              result.gain.parameter, result.gain.mu, result.loss.amount, result.loss.parameter,
-              result.loss.mu);
+  const char *parameterName = spec.parameterName.empty() ? "-" : spec.parameterName.c_str();
+  const auto extreme = [&](const char *what, const FurnaceExtreme &x, const char *none) {
+    if (x.amount > x.error)
+      std::printf("worst %s %.6g +- %.2g at (%s, mu) = (%.6g, %.6g)", what, x.amount, x.error,
+                  parameterName, x.parameter, x.mu);
+    else if (x.amount > 0.0)
+      std::printf("no %s beyond the stated error (at most %.2g, error %.2g)", what, x.amount,
+                  x.error);
+    else
+      std::printf("no %s (%s)", what, none);
+  };
+  extreme("gain", result.gain, "the albedo is never above 1");
+  std::printf("; ");
+  extreme("loss", result.loss, "the albedo is never below 1");
+  std::printf("\n");
   if (!o.out.empty())
     std::printf("wrote %s/furnace.{csv,json}, plots and sphere images\n", o.out.c_str());
   return 0;
