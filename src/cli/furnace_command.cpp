@@ -143,6 +143,12 @@ void SetupFurnaceCommand(CLI::App &app, FurnaceOptions &o) {
   app.add_option("--k", o.k, "microfacet with --eta: extinction coefficient in [0, 1000]");
   app.add_flag("--compensation", o.compensation,
                "microfacet: add the Kulla-Conty multiple-scattering lobe");
+  app.add_option("--ms-fresnel", o.msFresnel,
+                 "microfacet with --compensation: the lobe's Fresnel term, kulla-conty "
+                 "(F_avg^2 E_avg / (1 - F_avg (1 - E_avg)): at least two bounces, each "
+                 "through F) or single (F_avg E_avg / (1 - F_avg (1 - E_avg)))")
+      ->capture_default_str()
+      ->check(OneOf({"kulla-conty", "single"}));
   app.add_option("--parameter", o.parameter,
                  "The model's parameter, comma-separated: n (phong, blinn-phong), sigma in "
                  "radians (oren-nayar), r (eon, microfacet)")
@@ -210,7 +216,8 @@ int RunFurnace(const FurnaceOptions &o, CLI::App &app) {
                               : EonVariant::kExact;
 
   // Microfacet options.
-  for (const char *option : {"--ndf", "--smith", "--f0", "--eta", "--k", "--compensation"})
+  for (const char *option :
+       {"--ndf", "--smith", "--f0", "--eta", "--k", "--compensation", "--ms-fresnel"})
     if (!spec.microfacet && app.count(option) > 0)
       return complain(std::string(option) + " does not apply to --model " + o.model +
                       "; it applies only to --model microfacet");
@@ -254,6 +261,14 @@ int RunFurnace(const FurnaceOptions &o, CLI::App &app) {
     }
     m.compensation = o.compensation;
     settings.options.push_back({"compensation", o.compensation ? "kulla-conty" : "none"});
+    if (app.count("--ms-fresnel") > 0 && !o.compensation)
+      return complain("--ms-fresnel '" + o.msFresnel + "' needs --compensation");
+    if (o.compensation) {
+      m.msFresnelSquared = o.msFresnel == "kulla-conty";
+      settings.options.push_back({"msFresnel", m.msFresnelSquared
+                                                   ? "F_avg^2 E_avg / (1 - F_avg (1 - E_avg))"
+                                                   : "F_avg E_avg / (1 - F_avg (1 - E_avg))"});
+    }
   }
 
   // The grids.

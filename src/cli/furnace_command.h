@@ -17,6 +17,7 @@ struct FurnaceOptions {
   std::string smith = "correlated";
   std::string f0, eta, k;  // microfacet Fresnel: Schlick or exact; neither: F = 1
   bool compensation = false;
+  std::string msFresnel = "kulla-conty";
   std::string parameter, mu;  // comma-separated lists
   std::string out;
   bool json = false;

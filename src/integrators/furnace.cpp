@@ -328,13 +328,18 @@ FurnacePoint FurnaceIntegrator::Albedo(double mu_o) const {
   const FurnaceValue E = WhiteMicrofacetAlbedo(mu_o);
   const double oneMinusEavg = 1.0 - eAvg_;
   const double D = 1.0 - fAvg_ * oneMinusEavg;
-  const double fMs = fAvg_ * eAvg_ / D;
+  // F_ms = F_avg^p E_avg / D, p = 2 (Kulla-Conty) or 1 (furnace.h).
+  const double fPower = model_.msFresnelSquared ? fAvg_ : 1.0;
+  const double fMs = fPower * fAvg_ * eAvg_ / D;
   const double ratio = I_ / oneMinusEavg;
   const double lobe = fMs * (1.0 - E.value) * ratio;
   // First-order propagation of the errors of E, I, E_avg and F_avg, with 1%
   // for the second-order terms.
-  const double fMsError =
-      fAvg_ * (1.0 - fAvg_) / (D * D) * eAvgError_ + eAvg_ / (D * D) * fAvgError_;
+  // d F_ms / d E_avg = F^p (1 - F) / D^2; d F_ms / d F_avg = E / D^2 (p = 1),
+  // F E (2 - F (1 - E)) / D^2 (p = 2).
+  const double dF = model_.msFresnelSquared ? fAvg_ * eAvg_ * (2.0 - fAvg_ * oneMinusEavg) / (D * D)
+                                            : eAvg_ / (D * D);
+  const double fMsError = fPower * fAvg_ * (1.0 - fAvg_) / (D * D) * eAvgError_ + dF * fAvgError_;
   const double lobeError =
       fMs *
           (E.error * ratio + (1.0 - E.value) * (IError_ / oneMinusEavg +

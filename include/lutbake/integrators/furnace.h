@@ -33,7 +33,13 @@
 //
 // Kulla-Conty compensation (microfacet, `compensation`): the lobe
 //   f_ms(o, i) = F_ms (1 - E(mu_o)) (1 - E(mu_i)) / (pi (1 - E_avg)),
-//   F_ms = F_avg E_avg / (1 - F_avg (1 - E_avg)),
+//   F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg))   (Kulla and Conty 2017),
+// light scattered k >= 2 times meets the Fresnel k times and leaves with
+// probability E_avg per bounce: sum_k F_avg^k E_avg (1 - E_avg)^(k-1) over
+// k >= 2 is (1 - E_avg) F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), against
+// (1 - E_avg) at F = 1. `msFresnelSquared` false gives F_avg E_avg / (1 -
+// F_avg (1 - E_avg)) instead, one factor F_avg fewer (as issue 17 wrote
+// it); both are 1 at F = 1.
 // is added, E and E_avg the F = 1 albedo of the same NDF and G (exact: the
 // library's panel quadrature of E and of E_avg; Schlick-GGX: this
 // integrator), F_avg that of the Fresnel model. Its albedo is
@@ -76,6 +82,7 @@ struct FurnaceModel {
   FurnaceFresnel fresnel = FurnaceFresnel::kOne;
   double f0 = 0.04, eta = 1.5, k = 0.0;
   bool compensation = false;
+  bool msFresnelSquared = true;  // F_ms with F_avg^2 (Kulla-Conty) or F_avg
 };
 
 // The model's parameter: Lambert none (ignored), Phong and Blinn-Phong the
