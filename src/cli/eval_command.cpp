@@ -92,6 +92,11 @@ void SetupEvalCommand(CLI::App &app, EvalOptions &o) {
                  "mirror, exact")
       ->type_name("LIST")
       ->check(RealList({0.0, 1.0, "comma-separated numbers in [0, 1]"}));
+  app.add_option("--sigma", o.sigma,
+                 "oren_nayar_E, oren_nayar_full_E: the facet slope angle's standard deviation, "
+                 "radians, comma-separated")
+      ->type_name("LIST")
+      ->check(RealList({0.0, 0.5 * kPi, "comma-separated numbers in [0, pi/2]"}));
   app.add_option("--fresnel", o.fresnel, "Favg: the Fresnel model")
       ->capture_default_str()
       ->check(OneOf({"schlick", "dielectric", "conductor", "f82"}));
@@ -156,9 +161,10 @@ int RunEval(const EvalOptions &o, CLI::App &app) {
   // The point options: which the table takes with these settings; the
   // others are refused rather than ignored.
   const std::map<std::string, const std::string *> given = {
-      {"mu", &o.mu}, {"roughness", &o.perceptualRoughness},
-      {"f0", &o.f0}, {"eta", &o.eta},
-      {"k", &o.k},   {"tint", &o.tint}};
+      {"mu", &o.mu},      {"roughness", &o.perceptualRoughness},
+      {"f0", &o.f0},      {"eta", &o.eta},
+      {"k", &o.k},        {"tint", &o.tint},
+      {"sigma", &o.sigma}};
   const std::vector<PointCoordinate> coordinates = table.Coordinates(settings);
   const Metadata labels = table.PointLabels(settings);
   std::string variant;  // " --fresnel schlick"

@@ -15,6 +15,7 @@ struct EvalOptions {
   std::string mu;  // comma-separated lists of points
   std::string perceptualRoughness;
   std::string f0, eta, k, tint;  // Favg parameters
+  std::string sigma;             // Oren-Nayar roughness, radians
   std::string ndf = "ggx";
   std::string smith = "correlated";
   std::string fresnel = "schlick";

@@ -17,5 +17,7 @@ const TableDefinition &GlassAlbedoTable();            // glass_E.cpp
 const TableDefinition &GlassAverageAlbedoTable();     // glass_Eavg.cpp
 const TableDefinition &SpecularAlbedoTable();         // spec_E.cpp
 const TableDefinition &SpecularAverageAlbedoTable();  // spec_Eavg.cpp
+const TableDefinition &OrenNayarAlbedoTable();        // oren_nayar_E.cpp
+const TableDefinition &OrenNayarFullAlbedoTable();    // oren_nayar_E.cpp
 
 }  // namespace lutbake

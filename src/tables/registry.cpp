@@ -21,6 +21,8 @@ const std::vector<const TableDefinition *> &AllTables() {
       &GlassAverageAlbedoTable(),
       &SpecularAlbedoTable(),
       &SpecularAverageAlbedoTable(),
+      &OrenNayarAlbedoTable(),
+      &OrenNayarFullAlbedoTable(),
   };
   // clang-format on
   return tables;
