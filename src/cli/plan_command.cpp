@@ -21,7 +21,8 @@ void AddSceneOptions(CLI::App &app, SceneOptions &o) {
       ->expected(1, -1);
   app.add_flag("--no-ibl", o.noIbl, "No image-based lighting: leave out dfg");
   app.add_flag("--no-compensation", o.noCompensation,
-               "No Kulla-Conty energy compensation: leave out E, Eavg and Favg");
+               "No energy compensation: leave out E, Eavg and Favg (Kulla-Conty), glass_E and "
+               "glass_Eavg (rough transmission), spec_E and spec_Eavg (layering under a coat)");
 }
 
 int MakePlanOrComplain(const std::string &command, const SceneOptions &o, PlanOptions planOptions,

@@ -111,6 +111,11 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
   using Model = std::pair<NdfKind, SmithForm>;
   std::map<Model, Uses> compensated, ibl;
   std::map<FresnelModel, std::pair<Uses, Uses>> fresnel;  // eta, k
+  // (ndf, smith) -> roughness of the compensated materials' coats, and their
+  // relative IORs, both sides.
+  std::map<Model, Uses> coat;
+  std::map<Model, std::set<double>> coatEtas;
+  bool coatOff = false;        // a material with a coat, without compensation
   Uses sheen;                  // sheen roughness of the materials with a sheen layer
   Uses glass;                  // roughness of the compensated materials with transmission
   std::set<double> glassEtas;  // their relative IORs, both sides
@@ -150,6 +155,17 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
         eta.Add(m.fresnel.eta);
         eta.AddMaterial(m.name);
         if (m.fresnel.model == FresnelModel::kConductor) k.Add(m.fresnel.k);
+      }
+    }
+    // A coat: energy-conserving layering over the base, part of energy
+    // compensation.
+    if (!m.coatEta.empty()) {
+      if (usesCompensation) {
+        for (const RoughnessUse &r : m.coatRoughness) coat[model].Add(r.min, r.max);
+        coat[model].AddMaterial(m.name);
+        coatEtas[model].insert(m.coatEta.begin(), m.coatEta.end());
+      } else {
+        coatOff = true;
       }
     }
   }
@@ -221,6 +237,15 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
       t.etas.assign(glassEtas.begin(), glassEtas.end());
       (table->PlannedRoughnessAxis() == 1 ? t.z : t.y) = ListedAxis("eta", t.etas);
     }
+  // Coats: spec_E and spec_Eavg over the coat roughness and, as for glass, a
+  // listed eta axis at exactly the coat IORs, both sides.
+  for (const auto &[model, uses] : coat)
+    for (const TableDefinition *table : TablesFor(PlanRole::kDielectricLayering)) {
+      roughnessTable(*table, model, uses);
+      PlannedTable &t = plan.tables.back();
+      t.etas.assign(coatEtas[model].begin(), coatEtas[model].end());
+      (table->PlannedRoughnessAxis() == 1 ? t.z : t.y) = ListedAxis("eta", t.etas);
+    }
 
   // Why each table that is not planned is left out.
   const auto has = [&](PlanRole role) {
@@ -239,14 +264,15 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
     nothingLit = "no material needs it: each of the " + std::to_string(materials.size()) +
                  " is unlit or has no specular lobe";
   // A term is off because of the command line, the manifest's lighting, or
-  // every lit material's own setting.
+  // the own setting of every material that would need the table (`who`).
   const auto offReason = [&](bool commandLine, const std::optional<bool> &manifest,
-                             const char *flag, const char *what) {
+                             const char *flag, const char *what,
+                             const char *who = "every lit material") {
     if (!nothingLit.empty()) return nothingLit;
     if (!commandLine) return std::string(what) + " is off (" + flag + ")";
     if (manifest.has_value() && !*manifest)
       return std::string(what) + " is off (the manifest's \"lighting\" sets it false)";
-    return std::string(what) + " is off for every lit material (each sets it false)";
+    return std::string(what) + " is off for " + who + " (each sets it false)";
   };
   if (!has(PlanRole::kEnergyCompensation))
     omit(PlanRole::kEnergyCompensation, offReason(options.compensation, options.defaultCompensation,
@@ -271,6 +297,13 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
          : glassOff ? "energy compensation is off for every material with transmission"
                     : "no material transmits (KHR_materials_transmission with a "
                       "transmissionFactor above 0)");
+  if (!has(PlanRole::kDielectricLayering))
+    omit(PlanRole::kDielectricLayering,
+         !nothingLit.empty() || coatOff
+             ? offReason(options.compensation, options.defaultCompensation, "--no-compensation",
+                         "energy compensation (and with it energy-conserving layering)",
+                         "every material with a coat")
+             : "no material has a coat (a manifest's \"coat\")");
   if (!has(PlanRole::kSheenAlbedoScaling))
     omit(PlanRole::kSheenAlbedoScaling,
          !nothingLit.empty() ? nothingLit
@@ -307,13 +340,14 @@ std::string PlanJson(const BakePlan &plan) {
     Json j;
     j["name"] = t.name;
     j["table"] = t.definition->Name();
-    if (t.definition->Role() == PlanRole::kFresnelAverage) {
+    const PlanRole role = t.definition->Role();
+    if (role == PlanRole::kFresnelAverage) {
       j["fresnel"] = ToString(t.fresnel);
       j["eta"] = CoveredJson(t.eta);
       if (t.fresnel == FresnelModel::kConductor) j["k"] = CoveredJson(t.k);
-    } else if (t.definition->Role() == PlanRole::kSheenAlbedoScaling) {
+    } else if (role == PlanRole::kSheenAlbedoScaling) {
       j["sheenRoughness"] = CoveredJson(t.roughness);
-    } else if (t.definition->Role() == PlanRole::kGlassCompensation) {
+    } else if (role == PlanRole::kGlassCompensation || role == PlanRole::kDielectricLayering) {
       j["ndf"] = ToString(t.ndf);
       j["smith"] = ToString(t.smith);
       j["roughness"] = CoveredJson(t.roughness);
@@ -370,6 +404,14 @@ std::string PlanJson(const BakePlan &plan) {
     j["roughness"] = Json::array();
     for (const RoughnessUse &r : m.roughness)
       j["roughness"].push_back({{"layer", r.layer}, {"min", r.min}, {"max", r.max}});
+    if (!m.coatEta.empty()) {
+      Json coat;
+      coat["eta"] = m.coatEta;
+      coat["roughness"] = Json::array();
+      for (const RoughnessUse &r : m.coatRoughness)
+        coat["roughness"].push_back({{"min", r.min}, {"max", r.max}});
+      j["coat"] = coat;
+    }
     if (!m.sheenRoughness.empty()) {
       j["sheenRoughness"] = Json::array();
       for (const RoughnessUse &r : m.sheenRoughness)

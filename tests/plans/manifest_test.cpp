@@ -45,6 +45,42 @@ TEST(Manifest, ReadsMaterialsAndLighting) {
   EXPECT_FALSE(models.ibl.has_value());
 }
 
+TEST(Manifest, ReadsCoats) {
+  const Manifest m = ReadManifest(kPlans + "coat.json");
+  ASSERT_EQ(m.materials.size(), 3u);
+  const MaterialSpec &paint = m.materials[0];
+  // eta 1.5 seen from outside, 1 / 1.5 from the base beneath, in order.
+  EXPECT_EQ(paint.coatEta, (std::vector<double>{1 / 1.5, 1.5}));
+  ASSERT_EQ(paint.coatRoughness.size(), 1u);
+  EXPECT_EQ(paint.coatRoughness[0].layer, "coat");
+  EXPECT_EQ(paint.coatRoughness[0].min, 0.1);
+  EXPECT_EQ(paint.coatRoughness[0].max, 0.1);
+  // The coat is a specular layer of the material too, after the base.
+  ASSERT_EQ(paint.roughness.size(), 2u);
+  EXPECT_EQ(paint.roughness[0].layer, "base");
+  EXPECT_EQ(paint.roughness[0].min, 0.4);
+  EXPECT_EQ(paint.roughness[1].layer, "coat");
+  EXPECT_EQ(paint.roughness[1].min, 0.1);
+  EXPECT_EQ(paint.fresnel.model, FresnelModel::kSchlick);
+  EXPECT_EQ(m.materials[1].coatEta, (std::vector<double>{1 / 1.5, 1 / 1.33, 1.33, 1.5}));
+  EXPECT_EQ(m.materials[1].fresnel.eta.values, std::vector<double>{1.5});  // the base's
+  EXPECT_TRUE(m.materials[2].coatEta.empty());
+  EXPECT_TRUE(m.materials[2].coatRoughness.empty());
+
+  // A range of coat roughness; eta 1 is its own inverse; a coat roughness
+  // below 1e-12 is the mirror, with a note.
+  const Manifest r = ParseManifest(
+      R"({"materials": [{"roughness": 0.5, "coat": {"eta": 1, "roughness": {"min": 1e-13, "max": 0.3}}}]})",
+      "inline.json");
+  const MaterialSpec &coat = r.materials.at(0);
+  EXPECT_EQ(coat.coatEta, std::vector<double>{1.0});
+  ASSERT_EQ(coat.coatRoughness.size(), 1u);
+  EXPECT_EQ(coat.coatRoughness[0].min, 0.0);
+  EXPECT_EQ(coat.coatRoughness[0].max, 0.3);
+  ASSERT_EQ(coat.notes.size(), 1u);
+  EXPECT_EQ(coat.notes[0], "coat roughness 1e-13 is below 1e-12: baked as the mirror, r = 0");
+}
+
 TEST(Manifest, MistakesNameTheirPlace) {
   const auto has = [](const std::string &message, const std::string &fragment) {
     EXPECT_NE(message.find(fragment), std::string::npos) << message;
@@ -73,6 +109,22 @@ TEST(Manifest, MistakesNameTheirPlace) {
       "a conductor needs");
   has(ErrorOf(R"({"materials": [{"roughness": 0.1, "fresnel": {"model": "schlick", "eta": 1}}]})"),
       "/materials/0/fresnel/eta: unknown key");
+  // Coats: eta listed (spec_E's eta axis lists exactly the coat IORs), never a range.
+  has(ErrorOf(R"({"materials": [{"roughness": 0.1, "coat": {"eta": {"min": 1.3, "max": 1.6},
+                                                                "roughness": 0.1}}]})"),
+      "inline.json: /materials/0/coat/eta: a range is not accepted for a coat: spec_E is baked "
+      "at exactly the coat IORs used (a listed eta axis, eta and 1 / eta), so give a number or a "
+      "list of numbers");
+  has(ErrorOf(R"({"materials": [{"roughness": 0.1, "coat": {"eta": 1.5}}]})"),
+      "/materials/0/coat: a coat needs \"eta\"");
+  has(ErrorOf(R"({"materials": [{"roughness": 0.1, "coat": {"ior": 1.5, "roughness": 0}}]})"),
+      "/materials/0/coat/ior: unknown key \"ior\"; accepted here: eta, roughness");
+  has(ErrorOf(R"({"materials": [{"roughness": 0.1, "coat": {"eta": 0, "roughness": 0}}]})"),
+      "/materials/0/coat/eta: 0 is outside the accepted range [0.001, 10]");
+  has(ErrorOf(R"({"materials": [{"roughness": 0.1, "coat": {"eta": [1.5], "roughness": 2}}]})"),
+      "/materials/0/coat/roughness: 2 is outside");
+  has(ErrorOf(R"({"materials": [{"roughness": 0.1, "coat": 1.5}]})"),
+      "/materials/0/coat: expected an object");
   has(ErrorOf(R"([1, 2])"), "expected an object");
   has(ErrorOf("{\n  \"materials\": [\n    {\"roughness\": 0.1,}\n  ]\n}"), "line 3");
   has(ErrorOf(R"({"materials": [{"roughness": NaN}]})"), "malformed JSON");

@@ -139,9 +139,12 @@ TEST(Plan, NothingNeededIsSaidSo) {
   for (const char *scene : {"unlit.gltf", "no_lobe.gltf"}) {
     const BakePlan plan = PlanOf({kPlans + scene});
     EXPECT_TRUE(plan.empty()) << scene;
-    // E, Eavg, Favg, dfg, sheen_E (issue 14), glass_E and glass_Eavg (issue 15).
-    EXPECT_EQ(plan.omitted.size(), 7u) << scene;
-    EXPECT_NE(Omitted(plan, "glass_E").find("unlit or has no specular lobe"), std::string::npos);
+    // E, Eavg, Favg, dfg, sheen_E (issue 14), glass_E, glass_Eavg, spec_E
+    // and spec_Eavg (issue 15).
+    EXPECT_EQ(plan.omitted.size(), 9u) << scene;
+    for (const char *name : {"glass_E", "spec_E", "spec_Eavg"})
+      EXPECT_NE(Omitted(plan, name).find("unlit or has no specular lobe"), std::string::npos)
+          << name;
     EXPECT_NE(Omitted(plan, "E").find("unlit or has no specular lobe"), std::string::npos);
     EXPECT_NE(Omitted(plan, "sheen_E").find("unlit or has no specular lobe"), std::string::npos);
   }
@@ -167,6 +170,65 @@ TEST(Plan, OtherFresnelModelsGetTablesOverTheirIors) {
   EXPECT_EQ(Find(plan, "E")->roughness.max, 0.4);
   EXPECT_EQ(Find(plan, "E")->materials, (std::vector<std::string>{"water", "glass", "gold"}));
   EXPECT_FALSE(plan.schlickFavgFunction);
+}
+
+// A manifest's coats: spec_E and spec_Eavg over the coat roughness and a
+// listed eta axis at exactly the coat IORs, both sides (1.5 and 1.33 from
+// outside, 1/1.5 and 1/1.33 from the base beneath); the coat is also a
+// specular layer of E, Eavg and dfg.
+TEST(Plan, CoatsGetSpecularAlbedoAtExactlyTheirIorsBothSides) {
+  const Manifest m = ReadManifest(kPlans + "coat.json");
+  const BakePlan plan = MakePlan(m.materials, {});
+  const std::vector<double> etas{1 / 1.5, 1 / 1.33, 1.33, 1.5};
+  const PlannedTable *e = Find(plan, "spec_E"), *average = Find(plan, "spec_Eavg");
+  ASSERT_NE(e, nullptr);
+  ASSERT_NE(average, nullptr);
+  EXPECT_EQ(e->definition, &TableNamed("spec_E"));
+  EXPECT_EQ(e->etas, etas);
+  EXPECT_EQ(e->x.name, "mu");
+  EXPECT_EQ(e->x.count, 32);
+  EXPECT_EQ(e->y.nodes, std::vector<double>{0.1});  // both coats at 0.1
+  EXPECT_TRUE(e->z.listed());
+  EXPECT_EQ(e->z.name, "eta");
+  EXPECT_EQ(e->z.nodes, etas);
+  EXPECT_EQ(average->x.nodes, std::vector<double>{0.1});
+  EXPECT_TRUE(average->y.listed());
+  EXPECT_EQ(average->y.nodes, etas);
+  EXPECT_EQ(e->materials, (std::vector<std::string>{"car paint", "lacquered wood"}));
+  EXPECT_EQ(average->materials, e->materials);
+  EXPECT_EQ(Find(plan, "E")->roughness.values, (std::vector<double>{0.1, 0.3, 0.4, 0.6}));
+  EXPECT_EQ(Find(plan, "dfg")->roughness.values, (std::vector<double>{0.1, 0.3, 0.4, 0.6}));
+  EXPECT_EQ(Omitted(plan, "spec_E"), "");
+
+  // Layering is part of energy compensation: off with it, and said why.
+  PlanOptions off;
+  off.compensation = false;
+  const BakePlan none = MakePlan(m.materials, off);
+  EXPECT_EQ(Find(none, "spec_E"), nullptr);
+  EXPECT_EQ(Omitted(none, "spec_Eavg"),
+            "energy compensation (and with it energy-conserving layering) is off "
+            "(--no-compensation)");
+  std::vector<MaterialSpec> own{m.materials[0], m.materials[2]};
+  own[0].compensation = false;
+  EXPECT_EQ(Omitted(MakePlan(own, {}), "spec_E"),
+            "energy compensation (and with it energy-conserving layering) is off for every "
+            "material with a coat (each sets it false)");
+  const BakePlan bare = MakePlan({m.materials[2]}, {});
+  EXPECT_EQ(Find(bare, "spec_E"), nullptr);
+  EXPECT_EQ(Omitted(bare, "spec_E"), "no material has a coat (a manifest's \"coat\")");
+
+  // The JSON: the listed etas, and each coated material's coat.
+  const auto j = nlohmann::json::parse(PlanJson(plan));
+  const auto &spec = j["tables"][j["tables"].size() - 2];
+  EXPECT_EQ(spec["name"], "spec_E");
+  EXPECT_EQ(spec["eta"], etas);
+  EXPECT_EQ(spec["roughness"]["values"], std::vector<double>{0.1});
+  EXPECT_EQ(spec["size"], (std::vector<int>{32, 1, 4}));
+  EXPECT_EQ(j["tables"].back()["name"], "spec_Eavg");
+  EXPECT_EQ(j["tables"].back()["size"], (std::vector<int>{1, 4}));
+  EXPECT_EQ(j["materials"][0]["coat"]["eta"], (std::vector<double>{1 / 1.5, 1.5}));
+  EXPECT_EQ(j["materials"][0]["coat"]["roughness"][0]["max"], 0.1);
+  EXPECT_FALSE(j["materials"][2].contains("coat"));
 }
 
 TEST(Plan, VariantsOfOneTableGetSuffixes) {
@@ -305,7 +367,8 @@ TEST(PlanCli, JsonHasTheDocumentedShape) {
     omitted.push_back(o["name"]);
     EXPECT_FALSE(o["reason"].get<std::string>().empty());
   }
-  EXPECT_EQ(omitted, (std::vector<std::string>{"Favg", "dfg"}));
+  // No coat.
+  EXPECT_EQ(omitted, (std::vector<std::string>{"Favg", "dfg", "spec_E", "spec_Eavg"}));
   // Transmission and volume are baked now (issue 15): anisotropy and
   // iridescence remain.
   ASSERT_EQ(j["unsupported"].size(), 2u);

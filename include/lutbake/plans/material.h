@@ -75,6 +75,12 @@ struct MaterialSpec {
   // transmission. Its roughness is the base layer's (transmissionRoughness).
   std::vector<double> transmissionEta;
   std::vector<RoughnessUse> transmissionRoughness;
+  // A dielectric coat (a manifest's "coat"): the relative IORs of its
+  // interface, both sides (eta seen from outside, 1 / eta from the base
+  // beneath), and its roughness. Empty without a coat. The coat is also a
+  // specular layer of `roughness` (layer "coat").
+  std::vector<double> coatEta;
+  std::vector<RoughnessUse> coatRoughness;
   // Per-material lighting; unset means "as the manifest or command line says".
   std::optional<bool> ibl;
   std::optional<bool> compensation;

@@ -31,6 +31,11 @@
 //     roughness and exactly the relative IORs they use, both sides (ior and
 //     1 / ior) as a listed eta axis: glass at 1.5 alone gets the two slices
 //     eta = 1.5 and 1/1.5, nothing between.
+//   - spec_E and spec_Eavg for compensated materials with a dielectric coat
+//     (a manifest's "coat"), over the coat roughness and a listed eta axis
+//     at exactly the coat IORs, both sides, as for glass: energy-conserving
+//     layering scales the base by 1 - spec_E (light leaving through the
+//     coat: eta < 1).
 //   - Features lutbake does not bake (volume absorption, ...) are listed as
 //     unsupported; the plan still holds the tables of those materials'
 //     other lobes.
@@ -78,7 +83,7 @@ struct PlannedTable {
   CoveredRange eta, k;                            // Favg (k: conductor only)
   Axis x, y;                                      // the axes it is baked on
   Axis z = LinearAxis("", 0.0, 1.0, 1);           // a 3D table's third axis (glass_E: eta)
-  std::vector<double> etas;                       // glass: the relative IORs, both sides
+  std::vector<double> etas;                       // glass, spec: the relative IORs, both sides
   std::vector<std::string> materials;             // the materials that need it
 };
 
