@@ -238,7 +238,8 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
       (table->PlannedRoughnessAxis() == 1 ? t.z : t.y) = ListedAxis("eta", t.etas);
     }
   // Coats: spec_E and spec_Eavg over the coat roughness and, as for glass, a
-  // listed eta axis at exactly the coat IORs, both sides.
+  // listed eta axis at exactly the coat IORs, both sides (a glTF clearcoat,
+  // IOR 1.5: the slices 1/1.5 and 1.5).
   for (const auto &[model, uses] : coat)
     for (const TableDefinition *table : TablesFor(PlanRole::kDielectricLayering)) {
       roughnessTable(*table, model, uses);
@@ -303,7 +304,8 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
              ? offReason(options.compensation, options.defaultCompensation, "--no-compensation",
                          "energy compensation (and with it energy-conserving layering)",
                          "every material with a coat")
-             : "no material has a coat (a manifest's \"coat\")");
+             : "no material has a coat (KHR_materials_clearcoat with a clearcoatFactor above 0, "
+               "or a manifest's \"coat\")");
   if (!has(PlanRole::kSheenAlbedoScaling))
     omit(PlanRole::kSheenAlbedoScaling,
          !nothingLit.empty() ? nothingLit

@@ -90,6 +90,20 @@ TEST(Plan, ClearcoatAndManyValues) {
   const BakePlan coat = PlanOf({kPlans + "clearcoat.gltf"});
   EXPECT_EQ(Find(coat, "E")->roughness.min, 0.0);
   EXPECT_EQ(Find(coat, "E")->roughness.max, 0.4);
+  // The coats (glTF's clearcoat IOR is 1.5) get spec_E and spec_Eavg at eta
+  // = 1/1.5 and 1.5 over the coat roughness alone: 0.1 and [0, 0.2] make
+  // [0, 0.2], ceil(32 x 0.2) = 7 rows.
+  for (const char *name : {"spec_E", "spec_Eavg"}) {
+    const PlannedTable *t = Find(coat, name);
+    ASSERT_NE(t, nullptr) << name;
+    EXPECT_EQ(t->etas, (std::vector<double>{1 / 1.5, 1.5}));
+    EXPECT_EQ((t->definition == &TableNamed("spec_E") ? t->z : t->y).nodes, t->etas);
+    const Axis &r = t->definition == &TableNamed("spec_E") ? t->y : t->x;
+    EXPECT_EQ(r.min, 0.0);
+    EXPECT_EQ(r.max, 0.2);
+    EXPECT_EQ(r.count, 7);
+    EXPECT_EQ(t->materials, (std::vector<std::string>{"car paint", "textured coat"}));
+  }
   // More distinct exact values than kMaxListedRoughness: a linear hull.
   std::vector<MaterialSpec> many;
   for (int i = 0; i <= kMaxListedRoughness; ++i) {
@@ -215,7 +229,9 @@ TEST(Plan, CoatsGetSpecularAlbedoAtExactlyTheirIorsBothSides) {
             "material with a coat (each sets it false)");
   const BakePlan bare = MakePlan({m.materials[2]}, {});
   EXPECT_EQ(Find(bare, "spec_E"), nullptr);
-  EXPECT_EQ(Omitted(bare, "spec_E"), "no material has a coat (a manifest's \"coat\")");
+  EXPECT_EQ(Omitted(bare, "spec_E"),
+            "no material has a coat (KHR_materials_clearcoat with a clearcoatFactor above 0, "
+            "or a manifest's \"coat\")");
 
   // The JSON: the listed etas, and each coated material's coat.
   const auto j = nlohmann::json::parse(PlanJson(plan));

@@ -75,10 +75,11 @@ struct MaterialSpec {
   // transmission. Its roughness is the base layer's (transmissionRoughness).
   std::vector<double> transmissionEta;
   std::vector<RoughnessUse> transmissionRoughness;
-  // A dielectric coat (a manifest's "coat"): the relative IORs of its
-  // interface, both sides (eta seen from outside, 1 / eta from the base
-  // beneath), and its roughness. Empty without a coat. The coat is also a
-  // specular layer of `roughness` (layer "coat").
+  // A dielectric coat (a manifest's "coat", glTF's KHR_materials_clearcoat
+  // at its fixed IOR 1.5): the relative IORs of its interface, both sides
+  // (eta seen from outside, 1 / eta from the base beneath), and its
+  // roughness. Empty without a coat. The coat is also a specular layer of
+  // `roughness` (layer "coat" or "clearcoat").
   std::vector<double> coatEta;
   std::vector<RoughnessUse> coatRoughness;
   // Per-material lighting; unset means "as the manifest or command line says".

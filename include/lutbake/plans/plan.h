@@ -32,10 +32,10 @@
 //     1 / ior) as a listed eta axis: glass at 1.5 alone gets the two slices
 //     eta = 1.5 and 1/1.5, nothing between.
 //   - spec_E and spec_Eavg for compensated materials with a dielectric coat
-//     (a manifest's "coat"), over the coat roughness and a listed eta axis
-//     at exactly the coat IORs, both sides, as for glass: energy-conserving
-//     layering scales the base by 1 - spec_E (light leaving through the
-//     coat: eta < 1).
+//     (a manifest's "coat"; glTF's KHR_materials_clearcoat, whose IOR is
+//     1.5), over the coat roughness and a listed eta axis at exactly the
+//     coat IORs, both sides, as for glass: energy-conserving layering scales
+//     the base by 1 - spec_E (light leaving through the coat: eta < 1).
 //   - Features lutbake does not bake (volume absorption, ...) are listed as
 //     unsupported; the plan still holds the tables of those materials'
 //     other lobes.
