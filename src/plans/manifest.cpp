@@ -141,7 +141,7 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
     const Place at = place.Child("fresnel");
     json_input::RequireObject(*f, at);
     const Json *model = Member(*f, "model");
-    if (!model) at.Fail("no \"model\"; accepted: schlick, dielectric, conductor");
+    if (!model) at.Fail("no \"model\"; accepted: schlick, dielectric, conductor, f82");
     const std::string s = json_input::String(*model, at.Child("model"));
     if (s == "schlick") {
       json_input::OnlyKeys(*f, at, {"model", "f0"});
@@ -163,9 +163,16 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
       if (!eta || !k) at.Fail("a conductor needs \"eta\" in (0, 10] and \"k\" in [0, 20]");
       out.fresnel.eta = Parameter(*eta, at.Child("eta"), 1e-3, 10.0);
       out.fresnel.k = Parameter(*k, at.Child("k"), 0.0, 20.0);
+    } else if (s == "f82") {
+      json_input::OnlyKeys(*f, at, {"model", "f0", "tint"});
+      out.fresnel.model = FresnelModel::kF82;
+      const Json *f0 = Member(*f, "f0"), *tint = Member(*f, "tint");
+      if (!f0 || !tint) at.Fail("an F82-tint metal needs \"f0\" and \"tint\", each in [0, 1]");
+      out.fresnel.f0 = Parameter(*f0, at.Child("f0"), 0.0, 1.0);
+      out.fresnel.tint = Parameter(*tint, at.Child("tint"), 0.0, 1.0);
     } else {
-      at.Child("model").Fail("\"" + s +
-                             "\" is not a Fresnel model; accepted: schlick, dielectric, conductor");
+      at.Child("model").Fail(
+          "\"" + s + "\" is not a Fresnel model; accepted: schlick, dielectric, conductor, f82");
     }
   }
   return out;

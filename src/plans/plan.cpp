@@ -110,7 +110,11 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
   // (ndf, smith) -> uses of roughness by compensated / IBL materials.
   using Model = std::pair<NdfKind, SmithForm>;
   std::map<Model, Uses> compensated, ibl;
-  std::map<FresnelModel, std::pair<Uses, Uses>> fresnel;  // eta, k
+  // The parameters of the Favg axes: eta (and k), or F0 and tint (f82).
+  std::map<FresnelModel, std::pair<Uses, Uses>> fresnel;
+  // (ndf, smith) -> roughness of the IBL-lit materials with the F82-tint Fresnel.
+  std::map<Model, Uses> f82;
+  bool f82Used = false;  // a lit material has the F82-tint Fresnel
   // (ndf, smith) -> roughness of the compensated materials' coats, and their
   // relative IORs, both sides.
   std::map<Model, Uses> coat;
@@ -151,11 +155,23 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
       if (m.fresnel.model == FresnelModel::kSchlick) {
         ++litSchlickCompensated;
       } else {
-        auto &[eta, k] = fresnel[m.fresnel.model];
-        eta.Add(m.fresnel.eta);
-        eta.AddMaterial(m.name);
-        if (m.fresnel.model == FresnelModel::kConductor) k.Add(m.fresnel.k);
+        auto &[x, y] = fresnel[m.fresnel.model];
+        const bool tinted = m.fresnel.model == FresnelModel::kF82;
+        x.Add(tinted ? m.fresnel.f0 : m.fresnel.eta);
+        x.AddMaterial(m.name);
+        if (tinted)
+          y.Add(m.fresnel.tint);
+        else if (m.fresnel.model == FresnelModel::kConductor)
+          y.Add(m.fresnel.k);
       }
+    }
+    // The F82 term C of the split sum (f82), beside dfg: over the base
+    // layer's roughness only, since a coat's Fresnel is its own.
+    if (m.fresnel.model == FresnelModel::kF82) {
+      f82Used = true;
+      if (usesIbl)
+        for (const RoughnessUse &r : m.roughness)
+          if (r.layer == "base") f82[model].Add(r.min, r.max), f82[model].AddMaterial(m.name);
     }
     // A coat: energy-conserving layering over the base, part of energy
     // compensation.
@@ -204,9 +220,20 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
       t.name = std::string(table->Name()) +
                (fresnel.size() > 1 ? "_" + std::string(ToString(model)) : std::string());
       const int full = SizeFor(options, *table);
+      t.materials = uses.first.materials;
+      if (model == FresnelModel::kF82) {
+        // F0 and tint are reflectances: the full table spans [0, 1] on both,
+        // and a narrowed range keeps its texel spacing, as roughness does.
+        t.f0 = uses.first.Cover(options.maxListedRoughness);
+        t.tint = uses.second.Cover(options.maxListedRoughness);
+        table->Axes(PlannedSettings(t, BakeSettings{}), full, &t.x, &t.y);
+        t.x = AxisOver(t.x.name, t.f0, full, t.x.max - t.x.min);
+        t.y = AxisOver(t.y.name, t.tint, full, t.y.max - t.y.min);
+        plan.tables.push_back(t);
+        continue;
+      }
       const Uses &eta = uses.first, &k = uses.second;
       t.eta = eta.Cover(options.maxListedRoughness);
-      t.materials = eta.materials;
       // Linear ranges get the full table's texel count: the F_avg axes have no
       // fixed full width to share (section 1 of the SPEC leaves them open).
       t.x = AxisOver("eta", t.eta, full, t.eta.max - t.eta.min);
@@ -219,6 +246,11 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
     }
   for (const auto &[model, uses] : ibl)
     for (const TableDefinition *table : TablesFor(PlanRole::kImageBasedLighting))
+      roughnessTable(*table, model, uses);
+  // The F82-tint metals' third split-sum term, F0 A + F90 B - a C: f82 at
+  // dfg's texels (same model, the F82 materials' base roughness).
+  for (const auto &[model, uses] : f82)
+    for (const TableDefinition *table : TablesFor(PlanRole::kF82ImageBasedLighting))
       roughnessTable(*table, model, uses);
   // The sheen tables do not depend on the base layer's model: one of each,
   // over every sheen roughness (the bake's --sheen-visibility and
@@ -292,6 +324,13 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
   if (!has(PlanRole::kImageBasedLighting))
     omit(PlanRole::kImageBasedLighting,
          offReason(options.ibl, options.defaultIbl, "--no-ibl", "image-based lighting"));
+  if (!has(PlanRole::kF82ImageBasedLighting))
+    omit(PlanRole::kF82ImageBasedLighting,
+         !nothingLit.empty() || f82Used
+             ? offReason(options.ibl, options.defaultIbl, "--no-ibl", "image-based lighting",
+                         "every material with the F82-tint Fresnel")
+             : "no material uses the F82-tint Fresnel (a manifest's \"fresnel\": {\"model\": "
+               "\"f82\"}); the split sum of the others is F0 A + F90 B, dfg alone");
   if (!has(PlanRole::kGlassCompensation))
     omit(PlanRole::kGlassCompensation,
          !nothingLit.empty() && !glassOff ? nothingLit
@@ -345,8 +384,13 @@ std::string PlanJson(const BakePlan &plan) {
     const PlanRole role = t.definition->Role();
     if (role == PlanRole::kFresnelAverage) {
       j["fresnel"] = ToString(t.fresnel);
-      j["eta"] = CoveredJson(t.eta);
-      if (t.fresnel == FresnelModel::kConductor) j["k"] = CoveredJson(t.k);
+      if (t.fresnel == FresnelModel::kF82) {
+        j["F0"] = CoveredJson(t.f0);
+        j["tint"] = CoveredJson(t.tint);
+      } else {
+        j["eta"] = CoveredJson(t.eta);
+        if (t.fresnel == FresnelModel::kConductor) j["k"] = CoveredJson(t.k);
+      }
     } else if (role == PlanRole::kSheenAlbedoScaling) {
       j["sheenRoughness"] = CoveredJson(t.roughness);
     } else if (role == PlanRole::kGlassCompensation || role == PlanRole::kDielectricLayering) {
@@ -402,6 +446,13 @@ std::string PlanJson(const BakePlan &plan) {
       j["eta"] = m.fresnel.eta.values[0];
       if (m.fresnel.model == FresnelModel::kConductor) j["k"] = k;
       j["Favg"] = EvaluateFresnelAverage(m.fresnel.model, m.fresnel.eta.values[0], k).value[0];
+    } else if (m.fresnel.model == FresnelModel::kF82 && m.fresnel.f0.values.size() == 1 &&
+               m.fresnel.tint.values.size() == 1) {
+      // The closed form 20/21 F0 + 1/21 - a / 126 (fresnel_average.h).
+      const double f0 = m.fresnel.f0.values[0], tint = m.fresnel.tint.values[0];
+      j["F0"] = f0;
+      j["tint"] = tint;
+      j["Favg"] = EvaluateFresnelAverage(FresnelModel::kF82, f0, tint).value[0];
     }
     j["roughness"] = Json::array();
     for (const RoughnessUse &r : m.roughness)

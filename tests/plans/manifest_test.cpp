@@ -81,6 +81,22 @@ TEST(Manifest, ReadsCoats) {
   EXPECT_EQ(coat.notes[0], "coat roughness 1e-13 is below 1e-12: baked as the mirror, r = 0");
 }
 
+TEST(Manifest, ReadsF82Metals) {
+  const Manifest m = ReadManifest(kPlans + "f82.json");
+  ASSERT_EQ(m.materials.size(), 4u);
+  const MaterialSpec &brass = m.materials[0];
+  EXPECT_EQ(brass.fresnel.model, FresnelModel::kF82);
+  EXPECT_EQ(brass.fresnel.f0.values, (std::vector<double>{0.91, 0.78}));
+  EXPECT_EQ(brass.fresnel.tint.values, std::vector<double>{0.7});
+  EXPECT_TRUE(brass.fresnel.eta.values.empty());  // no IOR
+  const MaterialSpec &chrome = m.materials[1];
+  EXPECT_EQ(chrome.fresnel.f0.values, std::vector<double>{0.55});
+  EXPECT_TRUE(chrome.fresnel.tint.range());
+  EXPECT_EQ(chrome.fresnel.tint.min, 0.5);
+  EXPECT_EQ(chrome.fresnel.tint.max, 0.75);
+  EXPECT_EQ(m.materials[2].ibl, std::optional<bool>(false));
+}
+
 TEST(Manifest, MistakesNameTheirPlace) {
   const auto has = [](const std::string &message, const std::string &fragment) {
     EXPECT_NE(message.find(fragment), std::string::npos) << message;
@@ -125,6 +141,17 @@ TEST(Manifest, MistakesNameTheirPlace) {
       "/materials/0/coat/roughness: 2 is outside");
   has(ErrorOf(R"({"materials": [{"roughness": 0.1, "coat": 1.5}]})"),
       "/materials/0/coat: expected an object");
+  // F82 tint: f0 and tint, each in [0, 1].
+  has(ErrorOf(R"({"materials": [{"roughness": 0.1, "fresnel": {"model": "f82", "f0": 0.9}}]})"),
+      "/materials/0/fresnel: an F82-tint metal needs \"f0\" and \"tint\"");
+  has(ErrorOf(
+          R"({"materials": [{"roughness": 0.1, "fresnel": {"model": "f82", "f0": 0.9, "tint": 1.5}}]})"),
+      "/materials/0/fresnel/tint: 1.5 is outside the accepted range [0, 1]");
+  has(ErrorOf(
+          R"({"materials": [{"roughness": 0.1, "fresnel": {"model": "f82", "f0": 0.9, "tint": 1, "eta": 1}}]})"),
+      "/materials/0/fresnel/eta: unknown key \"eta\"; accepted here: model, f0, tint");
+  has(ErrorOf(R"({"materials": [{"roughness": 0.1, "fresnel": {"model": "cook"}}]})"),
+      "accepted: schlick, dielectric, conductor, f82");
   has(ErrorOf(R"([1, 2])"), "expected an object");
   has(ErrorOf("{\n  \"materials\": [\n    {\"roughness\": 0.1,}\n  ]\n}"), "line 3");
   has(ErrorOf(R"({"materials": [{"roughness": NaN}]})"), "malformed JSON");

@@ -153,10 +153,10 @@ TEST(Plan, NothingNeededIsSaidSo) {
   for (const char *scene : {"unlit.gltf", "no_lobe.gltf"}) {
     const BakePlan plan = PlanOf({kPlans + scene});
     EXPECT_TRUE(plan.empty()) << scene;
-    // E, Eavg, Favg, dfg, sheen_E (issue 14), glass_E, glass_Eavg, spec_E
-    // and spec_Eavg (issue 15).
-    EXPECT_EQ(plan.omitted.size(), 9u) << scene;
-    for (const char *name : {"glass_E", "spec_E", "spec_Eavg"})
+    // E, Eavg, Favg, dfg, sheen_E (issue 14), glass_E, glass_Eavg, f82,
+    // spec_E and spec_Eavg (issue 15).
+    EXPECT_EQ(plan.omitted.size(), 10u) << scene;
+    for (const char *name : {"glass_E", "f82", "spec_E", "spec_Eavg"})
       EXPECT_NE(Omitted(plan, name).find("unlit or has no specular lobe"), std::string::npos)
           << name;
     EXPECT_NE(Omitted(plan, "E").find("unlit or has no specular lobe"), std::string::npos);
@@ -245,6 +245,71 @@ TEST(Plan, CoatsGetSpecularAlbedoAtExactlyTheirIorsBothSides) {
   EXPECT_EQ(j["materials"][0]["coat"]["eta"], (std::vector<double>{1 / 1.5, 1.5}));
   EXPECT_EQ(j["materials"][0]["coat"]["roughness"][0]["max"], 0.1);
   EXPECT_FALSE(j["materials"][2].contains("coat"));
+}
+
+// F82-tint metals: f82 (the split sum's C) over the base roughness of those
+// lit by IBL, beside dfg; Favg over the F0 and tint of those compensated,
+// F0 x tint as the f82 variant of Favg takes them.
+TEST(Plan, F82MetalsGetTheF82TermAndTheirFavg) {
+  const Manifest m = ReadManifest(kPlans + "f82.json");
+  const BakePlan plan = MakePlan(m.materials, {});
+  const PlannedTable *c = Find(plan, "f82");
+  ASSERT_NE(c, nullptr);
+  EXPECT_EQ(c->definition, &TableNamed("f82"));
+  // brass 0.25, chrome 0.1 and 0.3; matte gold has ibl false.
+  EXPECT_EQ(c->roughness.values, (std::vector<double>{0.1, 0.25, 0.3}));
+  EXPECT_EQ(c->y.nodes, (std::vector<double>{0.1, 0.25, 0.3}));
+  EXPECT_EQ(c->x.count, 128);  // dfg's texels
+  EXPECT_EQ(c->materials, (std::vector<std::string>{"brass", "chrome"}));
+  // dfg (water too) covers the same roughness: C sits at dfg's texels.
+  EXPECT_EQ(Find(plan, "dfg")->y.nodes, c->y.nodes);
+
+  // Two Fresnel models: Favg_f82 and Favg_dielectric.
+  const PlannedTable *favg = Find(plan, "Favg_f82");
+  ASSERT_NE(favg, nullptr);
+  ASSERT_NE(Find(plan, "Favg_dielectric"), nullptr);
+  EXPECT_EQ(favg->fresnel, FresnelModel::kF82);
+  EXPECT_EQ(favg->x.name, "F0");
+  EXPECT_EQ(favg->x.nodes, (std::vector<double>{0.55, 0.78, 0.9, 0.91}));
+  // Tints 0.7, 0.8 and the range [0.5, 0.75]: linear over [0.5, 0.8] with
+  // the full [0, 1] axis's spacing, ceil(32 x 0.3) = 10 texels.
+  EXPECT_EQ(favg->y.name, "tint");
+  EXPECT_FALSE(favg->y.listed());
+  EXPECT_EQ(favg->y.min, 0.5);
+  EXPECT_EQ(favg->y.max, 0.8);
+  EXPECT_EQ(favg->y.count, 10);
+  EXPECT_EQ(favg->materials, (std::vector<std::string>{"brass", "chrome", "matte gold"}));
+  EXPECT_FALSE(plan.schlickFavgFunction);
+
+  const auto j = nlohmann::json::parse(PlanJson(plan));
+  nlohmann::json favgJson;
+  for (const auto &t : j["tables"])
+    if (t["name"] == "Favg_f82") favgJson = t;
+  EXPECT_EQ(favgJson["fresnel"], "f82");
+  EXPECT_EQ(favgJson["F0"]["values"], (std::vector<double>{0.55, 0.78, 0.9, 0.91}));
+  EXPECT_EQ(favgJson["tint"]["min"], 0.5);
+  EXPECT_FALSE(favgJson["tint"].contains("values"));
+  // One F0 and one tint: the material's F_avg, 20/21 F0 + 1/21 - a / 126
+  // with a = Schlick(F0, 1/7) (1 - tint) / ((1/7) (6/7)^6).
+  const auto &gold = j["materials"][2];
+  const double schlick = 0.9 + 0.1 * std::pow(6.0 / 7.0, 5);
+  const double a = schlick * (1.0 - 0.8) / (std::pow(6.0 / 7.0, 6) / 7.0);
+  EXPECT_EQ(gold["F0"], 0.9);
+  EXPECT_EQ(gold["tint"], 0.8);
+  EXPECT_NEAR(gold["Favg"].get<double>(), 0.9 * 20.0 / 21.0 + 1.0 / 21.0 - a / 126.0, 1e-15);
+  EXPECT_FALSE(j["materials"][0].contains("Favg"));  // brass: two F0
+
+  // Without IBL: no f82, and why; without F82 metals: why not.
+  PlanOptions noIbl;
+  noIbl.ibl = false;
+  EXPECT_EQ(Find(MakePlan(m.materials, noIbl), "f82"), nullptr);
+  EXPECT_EQ(Omitted(MakePlan(m.materials, noIbl), "f82"), "image-based lighting is off (--no-ibl)");
+  std::vector<MaterialSpec> noIblMetal{m.materials[2], m.materials[3]};
+  EXPECT_EQ(Omitted(MakePlan(noIblMetal, {}), "f82"),
+            "image-based lighting is off for every material with the F82-tint Fresnel (each "
+            "sets it false)");
+  EXPECT_NE(Omitted(MakePlan({m.materials[3]}, {}), "f82").find("no material uses the F82-tint"),
+            std::string::npos);
 }
 
 TEST(Plan, VariantsOfOneTableGetSuffixes) {
@@ -383,8 +448,8 @@ TEST(PlanCli, JsonHasTheDocumentedShape) {
     omitted.push_back(o["name"]);
     EXPECT_FALSE(o["reason"].get<std::string>().empty());
   }
-  // No coat.
-  EXPECT_EQ(omitted, (std::vector<std::string>{"Favg", "dfg", "spec_E", "spec_Eavg"}));
+  // No F82 metal, and no coat.
+  EXPECT_EQ(omitted, (std::vector<std::string>{"Favg", "dfg", "f82", "spec_E", "spec_Eavg"}));
   // Transmission and volume are baked now (issue 15): anisotropy and
   // iridescence remain.
   ASSERT_EQ(j["unsupported"].size(), 2u);

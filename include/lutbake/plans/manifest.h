@@ -17,6 +17,7 @@
 //                                                           //   dielectric: "eta" in (0, 10]
 //                                                           //   conductor: "eta" in (0, 10],
 //                                                           //     "k" in [0, 20]
+//                                                           //   f82: "f0" and "tint" in [0, 1]
 //                                                           //   each a number, list or {min, max}
 //         "ibl": true, "compensation": true,                // optional, per material
 //         "unlit": false,                                   // optional: true needs no table

@@ -46,6 +46,10 @@ struct FresnelUse {
   FresnelModel model = FresnelModel::kSchlick;
   ParameterUse eta;  // dielectric and conductor: relative IOR (real part)
   ParameterUse k;    // conductor: extinction coefficient
+  // F82 tint (fresnel.h): F0 and the tint, reflectances in [0, 1], of any
+  // colour channel.
+  ParameterUse f0;
+  ParameterUse tint;
   // Schlick, when the file fixes them: F0 per colour channel (one value, or
   // r, g, b) and F90. For glTF these are the dielectric part's (from
   // KHR_materials_ior and _specular; the metal part's F0 is the base colour,
