@@ -19,9 +19,10 @@ void AddSceneOptions(CLI::App &app, SceneOptions &o) {
                  "JSON manifests listing materials and lighting (README, 'Bake plans')")
       ->type_name("FILE...")
       ->expected(1, -1);
-  app.add_flag("--no-ibl", o.noIbl, "No image-based lighting: leave out dfg");
+  app.add_flag("--no-ibl", o.noIbl, "No image-based lighting: leave out dfg (and f82)");
   app.add_flag("--no-compensation", o.noCompensation,
-               "No Kulla-Conty energy compensation: leave out E, Eavg and Favg");
+               "No energy compensation: leave out E, Eavg and Favg (Kulla-Conty), glass_E and "
+               "glass_Eavg (rough transmission), spec_E and spec_Eavg (layering under a coat)");
 }
 
 int MakePlanOrComplain(const std::string &command, const SceneOptions &o, PlanOptions planOptions,

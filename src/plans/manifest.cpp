@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "plans/json_input.h"
@@ -40,6 +41,23 @@ ParameterUse Parameter(const Json &v, const Place &place, double lo, double hi) 
   return out;
 }
 
+// The perceptual roughness of one specular layer, as uses of `layer`
+// appended to *uses: one exact use per listed value, or one range; values
+// below 1e-12 are snapped to the mirror (SnapToMirror) with a note saying
+// `what`.
+void Roughness(const Json &v, const Place &place, const char *layer, const std::string &what,
+               MaterialSpec &material, std::vector<RoughnessUse> *uses) {
+  const ParameterUse r = Parameter(v, place, 0.0, 1.0);
+  const auto snap = [&](double x) { return SnapToMirror(x, material, what); };
+  if (r.range())
+    uses->push_back({layer, snap(r.min), snap(r.max)});
+  else
+    for (double x : r.values) {
+      const double exact = snap(x);
+      uses->push_back({layer, exact, exact});
+    }
+}
+
 std::optional<bool> Lighting(const Json &object, const char *key, const Place &place) {
   const Json *v = Member(object, key);
   if (!v) return std::nullopt;
@@ -51,7 +69,7 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
   json_input::RequireObject(m, place);
   json_input::OnlyKeys(m, place,
                        {"name", "ndf", "smith", "roughness", "fresnel", "ibl", "compensation",
-                        "unlit", "sheenRoughness"});
+                        "unlit", "sheenRoughness", "coat"});
   MaterialSpec out;
   out.source = name;
   out.where = place.Text();
@@ -81,17 +99,33 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
   out.compensation = Lighting(m, "compensation", place);
 
   if (const Json *v = Member(m, "roughness")) {
-    const ParameterUse r = Parameter(*v, place.Child("roughness"), 0.0, 1.0);
-    const auto snap = [&](double x) { return SnapToMirror(x, out, "roughness"); };
-    if (r.range())
-      out.roughness.push_back({"base", snap(r.min), snap(r.max)});
-    else
-      for (double x : r.values) {
-        const double exact = snap(x);
-        out.roughness.push_back({"base", exact, exact});
-      }
+    Roughness(*v, place.Child("roughness"), "base", "roughness", out, &out.roughness);
   } else if (!out.unlit) {
     place.Fail("no \"roughness\": give a number, a list or {\"min\", \"max\"} in [0, 1]");
+  }
+  // A dielectric coat over the base: spec_E's eta axis lists exactly the
+  // coat IORs used, both sides (eta from outside, 1 / eta from the base
+  // beneath), so eta is a number or a list, never a range. The coat is a
+  // specular layer too ("coat" in `roughness`).
+  if (const Json *c = Member(m, "coat")) {
+    const Place at = place.Child("coat");
+    json_input::RequireObject(*c, at);
+    json_input::OnlyKeys(*c, at, {"eta", "roughness"});
+    const Json *eta = Member(*c, "eta"), *r = Member(*c, "roughness");
+    if (!eta || !r)
+      at.Fail(
+          "a coat needs \"eta\", its relative IOR in (0, 10] (a number or a list), and "
+          "\"roughness\" in [0, 1] (a number, a list or {\"min\", \"max\"})");
+    const ParameterUse etas = Parameter(*eta, at.Child("eta"), 1e-3, 10.0);
+    if (etas.range())
+      at.Child("eta").Fail(
+          "a range is not accepted for a coat: spec_E is baked at exactly the coat IORs "
+          "used (a listed eta axis, eta and 1 / eta), so give a number or a list of numbers");
+    std::set<double> sides;
+    for (double e : etas.values) sides.insert({e, 1.0 / e});
+    out.coatEta.assign(sides.begin(), sides.end());
+    Roughness(*r, at.Child("roughness"), "coat", "coat roughness", out, &out.coatRoughness);
+    out.roughness.insert(out.roughness.end(), out.coatRoughness.begin(), out.coatRoughness.end());
   }
   // A sheen layer (KHR_materials_sheen's sheenRoughness: no snapping, the
   // sheen tables take all of [0, 1]).
@@ -107,7 +141,7 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
     const Place at = place.Child("fresnel");
     json_input::RequireObject(*f, at);
     const Json *model = Member(*f, "model");
-    if (!model) at.Fail("no \"model\"; accepted: schlick, dielectric, conductor");
+    if (!model) at.Fail("no \"model\"; accepted: schlick, dielectric, conductor, f82");
     const std::string s = json_input::String(*model, at.Child("model"));
     if (s == "schlick") {
       json_input::OnlyKeys(*f, at, {"model", "f0"});
@@ -129,9 +163,16 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
       if (!eta || !k) at.Fail("a conductor needs \"eta\" in (0, 10] and \"k\" in [0, 20]");
       out.fresnel.eta = Parameter(*eta, at.Child("eta"), 1e-3, 10.0);
       out.fresnel.k = Parameter(*k, at.Child("k"), 0.0, 20.0);
+    } else if (s == "f82") {
+      json_input::OnlyKeys(*f, at, {"model", "f0", "tint"});
+      out.fresnel.model = FresnelModel::kF82;
+      const Json *f0 = Member(*f, "f0"), *tint = Member(*f, "tint");
+      if (!f0 || !tint) at.Fail("an F82-tint metal needs \"f0\" and \"tint\", each in [0, 1]");
+      out.fresnel.f0 = Parameter(*f0, at.Child("f0"), 0.0, 1.0);
+      out.fresnel.tint = Parameter(*tint, at.Child("tint"), 0.0, 1.0);
     } else {
-      at.Child("model").Fail("\"" + s +
-                             "\" is not a Fresnel model; accepted: schlick, dielectric, conductor");
+      at.Child("model").Fail(
+          "\"" + s + "\" is not a Fresnel model; accepted: schlick, dielectric, conductor, f82");
     }
   }
   return out;

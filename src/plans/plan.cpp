@@ -110,7 +110,16 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
   // (ndf, smith) -> uses of roughness by compensated / IBL materials.
   using Model = std::pair<NdfKind, SmithForm>;
   std::map<Model, Uses> compensated, ibl;
-  std::map<FresnelModel, std::pair<Uses, Uses>> fresnel;  // eta, k
+  // The parameters of the Favg axes: eta (and k), or F0 and tint (f82).
+  std::map<FresnelModel, std::pair<Uses, Uses>> fresnel;
+  // (ndf, smith) -> roughness of the IBL-lit materials with the F82-tint Fresnel.
+  std::map<Model, Uses> f82;
+  bool f82Used = false;  // a lit material has the F82-tint Fresnel
+  // (ndf, smith) -> roughness of the compensated materials' coats, and their
+  // relative IORs, both sides.
+  std::map<Model, Uses> coat;
+  std::map<Model, std::set<double>> coatEtas;
+  bool coatOff = false;        // a material with a coat, without compensation
   Uses sheen;                  // sheen roughness of the materials with a sheen layer
   Uses glass;                  // roughness of the compensated materials with transmission
   std::set<double> glassEtas;  // their relative IORs, both sides
@@ -146,10 +155,33 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
       if (m.fresnel.model == FresnelModel::kSchlick) {
         ++litSchlickCompensated;
       } else {
-        auto &[eta, k] = fresnel[m.fresnel.model];
-        eta.Add(m.fresnel.eta);
-        eta.AddMaterial(m.name);
-        if (m.fresnel.model == FresnelModel::kConductor) k.Add(m.fresnel.k);
+        auto &[x, y] = fresnel[m.fresnel.model];
+        const bool tinted = m.fresnel.model == FresnelModel::kF82;
+        x.Add(tinted ? m.fresnel.f0 : m.fresnel.eta);
+        x.AddMaterial(m.name);
+        if (tinted)
+          y.Add(m.fresnel.tint);
+        else if (m.fresnel.model == FresnelModel::kConductor)
+          y.Add(m.fresnel.k);
+      }
+    }
+    // The F82 term C of the split sum (f82), beside dfg: over the base
+    // layer's roughness only, since a coat's Fresnel is its own.
+    if (m.fresnel.model == FresnelModel::kF82) {
+      f82Used = true;
+      if (usesIbl)
+        for (const RoughnessUse &r : m.roughness)
+          if (r.layer == "base") f82[model].Add(r.min, r.max), f82[model].AddMaterial(m.name);
+    }
+    // A coat: energy-conserving layering over the base, part of energy
+    // compensation.
+    if (!m.coatEta.empty()) {
+      if (usesCompensation) {
+        for (const RoughnessUse &r : m.coatRoughness) coat[model].Add(r.min, r.max);
+        coat[model].AddMaterial(m.name);
+        coatEtas[model].insert(m.coatEta.begin(), m.coatEta.end());
+      } else {
+        coatOff = true;
       }
     }
   }
@@ -188,9 +220,20 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
       t.name = std::string(table->Name()) +
                (fresnel.size() > 1 ? "_" + std::string(ToString(model)) : std::string());
       const int full = SizeFor(options, *table);
+      t.materials = uses.first.materials;
+      if (model == FresnelModel::kF82) {
+        // F0 and tint are reflectances: the full table spans [0, 1] on both,
+        // and a narrowed range keeps its texel spacing, as roughness does.
+        t.f0 = uses.first.Cover(options.maxListedRoughness);
+        t.tint = uses.second.Cover(options.maxListedRoughness);
+        table->Axes(PlannedSettings(t, BakeSettings{}), full, &t.x, &t.y);
+        t.x = AxisOver(t.x.name, t.f0, full, t.x.max - t.x.min);
+        t.y = AxisOver(t.y.name, t.tint, full, t.y.max - t.y.min);
+        plan.tables.push_back(t);
+        continue;
+      }
       const Uses &eta = uses.first, &k = uses.second;
       t.eta = eta.Cover(options.maxListedRoughness);
-      t.materials = eta.materials;
       // Linear ranges get the full table's texel count: the F_avg axes have no
       // fixed full width to share (section 1 of the SPEC leaves them open).
       t.x = AxisOver("eta", t.eta, full, t.eta.max - t.eta.min);
@@ -203,6 +246,11 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
     }
   for (const auto &[model, uses] : ibl)
     for (const TableDefinition *table : TablesFor(PlanRole::kImageBasedLighting))
+      roughnessTable(*table, model, uses);
+  // The F82-tint metals' third split-sum term, F0 A + F90 B - a C: f82 at
+  // dfg's texels (same model, the F82 materials' base roughness).
+  for (const auto &[model, uses] : f82)
+    for (const TableDefinition *table : TablesFor(PlanRole::kF82ImageBasedLighting))
       roughnessTable(*table, model, uses);
   // The sheen tables do not depend on the base layer's model: one of each,
   // over every sheen roughness (the bake's --sheen-visibility and
@@ -219,6 +267,16 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
       roughnessTable(*table, Model{NdfKind::kGgx, SmithForm::kCorrelated}, glass, false);
       PlannedTable &t = plan.tables.back();
       t.etas.assign(glassEtas.begin(), glassEtas.end());
+      (table->PlannedRoughnessAxis() == 1 ? t.z : t.y) = ListedAxis("eta", t.etas);
+    }
+  // Coats: spec_E and spec_Eavg over the coat roughness and, as for glass, a
+  // listed eta axis at exactly the coat IORs, both sides (a glTF clearcoat,
+  // IOR 1.5: the slices 1/1.5 and 1.5).
+  for (const auto &[model, uses] : coat)
+    for (const TableDefinition *table : TablesFor(PlanRole::kDielectricLayering)) {
+      roughnessTable(*table, model, uses);
+      PlannedTable &t = plan.tables.back();
+      t.etas.assign(coatEtas[model].begin(), coatEtas[model].end());
       (table->PlannedRoughnessAxis() == 1 ? t.z : t.y) = ListedAxis("eta", t.etas);
     }
 
@@ -239,14 +297,15 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
     nothingLit = "no material needs it: each of the " + std::to_string(materials.size()) +
                  " is unlit or has no specular lobe";
   // A term is off because of the command line, the manifest's lighting, or
-  // every lit material's own setting.
+  // the own setting of every material that would need the table (`who`).
   const auto offReason = [&](bool commandLine, const std::optional<bool> &manifest,
-                             const char *flag, const char *what) {
+                             const char *flag, const char *what,
+                             const char *who = "every lit material") {
     if (!nothingLit.empty()) return nothingLit;
     if (!commandLine) return std::string(what) + " is off (" + flag + ")";
     if (manifest.has_value() && !*manifest)
       return std::string(what) + " is off (the manifest's \"lighting\" sets it false)";
-    return std::string(what) + " is off for every lit material (each sets it false)";
+    return std::string(what) + " is off for " + who + " (each sets it false)";
   };
   if (!has(PlanRole::kEnergyCompensation))
     omit(PlanRole::kEnergyCompensation, offReason(options.compensation, options.defaultCompensation,
@@ -265,12 +324,27 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
   if (!has(PlanRole::kImageBasedLighting))
     omit(PlanRole::kImageBasedLighting,
          offReason(options.ibl, options.defaultIbl, "--no-ibl", "image-based lighting"));
+  if (!has(PlanRole::kF82ImageBasedLighting))
+    omit(PlanRole::kF82ImageBasedLighting,
+         !nothingLit.empty() || f82Used
+             ? offReason(options.ibl, options.defaultIbl, "--no-ibl", "image-based lighting",
+                         "every material with the F82-tint Fresnel")
+             : "no material uses the F82-tint Fresnel (a manifest's \"fresnel\": {\"model\": "
+               "\"f82\"}); the split sum of the others is F0 A + F90 B, dfg alone");
   if (!has(PlanRole::kGlassCompensation))
     omit(PlanRole::kGlassCompensation,
          !nothingLit.empty() && !glassOff ? nothingLit
          : glassOff ? "energy compensation is off for every material with transmission"
                     : "no material transmits (KHR_materials_transmission with a "
                       "transmissionFactor above 0)");
+  if (!has(PlanRole::kDielectricLayering))
+    omit(PlanRole::kDielectricLayering,
+         !nothingLit.empty() || coatOff
+             ? offReason(options.compensation, options.defaultCompensation, "--no-compensation",
+                         "energy compensation (and with it energy-conserving layering)",
+                         "every material with a coat")
+             : "no material has a coat (KHR_materials_clearcoat with a clearcoatFactor above 0, "
+               "or a manifest's \"coat\")");
   if (!has(PlanRole::kSheenAlbedoScaling))
     omit(PlanRole::kSheenAlbedoScaling,
          !nothingLit.empty() ? nothingLit
@@ -307,13 +381,19 @@ std::string PlanJson(const BakePlan &plan) {
     Json j;
     j["name"] = t.name;
     j["table"] = t.definition->Name();
-    if (t.definition->Role() == PlanRole::kFresnelAverage) {
+    const PlanRole role = t.definition->Role();
+    if (role == PlanRole::kFresnelAverage) {
       j["fresnel"] = ToString(t.fresnel);
-      j["eta"] = CoveredJson(t.eta);
-      if (t.fresnel == FresnelModel::kConductor) j["k"] = CoveredJson(t.k);
-    } else if (t.definition->Role() == PlanRole::kSheenAlbedoScaling) {
+      if (t.fresnel == FresnelModel::kF82) {
+        j["F0"] = CoveredJson(t.f0);
+        j["tint"] = CoveredJson(t.tint);
+      } else {
+        j["eta"] = CoveredJson(t.eta);
+        if (t.fresnel == FresnelModel::kConductor) j["k"] = CoveredJson(t.k);
+      }
+    } else if (role == PlanRole::kSheenAlbedoScaling) {
       j["sheenRoughness"] = CoveredJson(t.roughness);
-    } else if (t.definition->Role() == PlanRole::kGlassCompensation) {
+    } else if (role == PlanRole::kGlassCompensation || role == PlanRole::kDielectricLayering) {
       j["ndf"] = ToString(t.ndf);
       j["smith"] = ToString(t.smith);
       j["roughness"] = CoveredJson(t.roughness);
@@ -366,10 +446,25 @@ std::string PlanJson(const BakePlan &plan) {
       j["eta"] = m.fresnel.eta.values[0];
       if (m.fresnel.model == FresnelModel::kConductor) j["k"] = k;
       j["Favg"] = EvaluateFresnelAverage(m.fresnel.model, m.fresnel.eta.values[0], k).value[0];
+    } else if (m.fresnel.model == FresnelModel::kF82 && m.fresnel.f0.values.size() == 1 &&
+               m.fresnel.tint.values.size() == 1) {
+      // The closed form 20/21 F0 + 1/21 - a / 126 (fresnel_average.h).
+      const double f0 = m.fresnel.f0.values[0], tint = m.fresnel.tint.values[0];
+      j["F0"] = f0;
+      j["tint"] = tint;
+      j["Favg"] = EvaluateFresnelAverage(FresnelModel::kF82, f0, tint).value[0];
     }
     j["roughness"] = Json::array();
     for (const RoughnessUse &r : m.roughness)
       j["roughness"].push_back({{"layer", r.layer}, {"min", r.min}, {"max", r.max}});
+    if (!m.coatEta.empty()) {
+      Json coat;
+      coat["eta"] = m.coatEta;
+      coat["roughness"] = Json::array();
+      for (const RoughnessUse &r : m.coatRoughness)
+        coat["roughness"].push_back({{"min", r.min}, {"max", r.max}});
+      j["coat"] = coat;
+    }
     if (!m.sheenRoughness.empty()) {
       j["sheenRoughness"] = Json::array();
       for (const RoughnessUse &r : m.sheenRoughness)

@@ -240,9 +240,15 @@ MaterialSpec ReadMaterial(const Json &m, const Place &place, size_t index,
     const bool coatRoughnessTexture = Texture(*coat, "clearcoatRoughnessTexture", at);
     Texture(*coat, "clearcoatNormalTexture", at);
     // clearcoatTexture multiplies clearcoatFactor: factor 0 is off either way.
+    // The coat is a dielectric of fixed IOR 1.5 (the extension has no IOR
+    // of its own; KHR_materials_ior sets the base's): layering it
+    // energy-conservingly over the base needs spec_E at eta = 1.5 (light
+    // arriving from outside) and 1 / 1.5 (from the base beneath).
     if (coatFactor > 0.0) {
       const double r = SnapToMirror(coatRoughness, out, "clearcoatRoughnessFactor");
       out.roughness.push_back({"clearcoat", coatRoughnessTexture ? 0.0 : r, r});
+      out.coatRoughness.push_back(out.roughness.back());
+      out.coatEta = {1.0 / 1.5, 1.5};
     } else {
       out.notes.push_back(std::string("KHR_materials_clearcoat with clearcoatFactor 0") +
                           (coatTexture ? " (the texture multiplies it)" : "") +

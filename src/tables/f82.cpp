@@ -69,6 +69,7 @@ class F82Term final : public MicrofacetTable {
     r.atMostFactor = 0.25;
     return r;
   }
+  PlanRole Role() const override { return PlanRole::kF82ImageBasedLighting; }
   HeaderText Header(const Table &) const override {
     HeaderText text;
     AddRoughnessNotes(&text);

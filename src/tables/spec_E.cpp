@@ -24,6 +24,7 @@ class SpecularAlbedo final : public DielectricAlbedoTable {
            "(mu, r, eta)";
   }
   DielectricLobes Lobes() const override { return DielectricLobes::kReflection; }
+  PlanRole Role() const override { return PlanRole::kDielectricLayering; }
   HeaderText Header(const Table &table) const override {
     HeaderText text;
     AddNotes(&text);

@@ -18,7 +18,7 @@ const TableDefinition &SpecularAverageAlbedoTable() {
        "average albedo of a rough dielectric's reflection, 2 integral spec_E mu dmu, over (r, eta)",
        "Average albedo of a rough dielectric's reflection at perceptual roughness r and relative "
        "IOR eta.",
-       PlanRole::kNone});
+       PlanRole::kDielectricLayering});
   return table;
 }
 

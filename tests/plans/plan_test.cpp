@@ -90,6 +90,20 @@ TEST(Plan, ClearcoatAndManyValues) {
   const BakePlan coat = PlanOf({kPlans + "clearcoat.gltf"});
   EXPECT_EQ(Find(coat, "E")->roughness.min, 0.0);
   EXPECT_EQ(Find(coat, "E")->roughness.max, 0.4);
+  // The coats (glTF's clearcoat IOR is 1.5) get spec_E and spec_Eavg at eta
+  // = 1/1.5 and 1.5 over the coat roughness alone: 0.1 and [0, 0.2] make
+  // [0, 0.2], ceil(32 x 0.2) = 7 rows.
+  for (const char *name : {"spec_E", "spec_Eavg"}) {
+    const PlannedTable *t = Find(coat, name);
+    ASSERT_NE(t, nullptr) << name;
+    EXPECT_EQ(t->etas, (std::vector<double>{1 / 1.5, 1.5}));
+    EXPECT_EQ((t->definition == &TableNamed("spec_E") ? t->z : t->y).nodes, t->etas);
+    const Axis &r = t->definition == &TableNamed("spec_E") ? t->y : t->x;
+    EXPECT_EQ(r.min, 0.0);
+    EXPECT_EQ(r.max, 0.2);
+    EXPECT_EQ(r.count, 7);
+    EXPECT_EQ(t->materials, (std::vector<std::string>{"car paint", "textured coat"}));
+  }
   // More distinct exact values than kMaxListedRoughness: a linear hull.
   std::vector<MaterialSpec> many;
   for (int i = 0; i <= kMaxListedRoughness; ++i) {
@@ -139,9 +153,12 @@ TEST(Plan, NothingNeededIsSaidSo) {
   for (const char *scene : {"unlit.gltf", "no_lobe.gltf"}) {
     const BakePlan plan = PlanOf({kPlans + scene});
     EXPECT_TRUE(plan.empty()) << scene;
-    // E, Eavg, Favg, dfg, sheen_E (issue 14), glass_E and glass_Eavg (issue 15).
-    EXPECT_EQ(plan.omitted.size(), 7u) << scene;
-    EXPECT_NE(Omitted(plan, "glass_E").find("unlit or has no specular lobe"), std::string::npos);
+    // E, Eavg, Favg, dfg, sheen_E (issue 14), glass_E, glass_Eavg, f82,
+    // spec_E and spec_Eavg (issue 15).
+    EXPECT_EQ(plan.omitted.size(), 10u) << scene;
+    for (const char *name : {"glass_E", "f82", "spec_E", "spec_Eavg"})
+      EXPECT_NE(Omitted(plan, name).find("unlit or has no specular lobe"), std::string::npos)
+          << name;
     EXPECT_NE(Omitted(plan, "E").find("unlit or has no specular lobe"), std::string::npos);
     EXPECT_NE(Omitted(plan, "sheen_E").find("unlit or has no specular lobe"), std::string::npos);
   }
@@ -167,6 +184,132 @@ TEST(Plan, OtherFresnelModelsGetTablesOverTheirIors) {
   EXPECT_EQ(Find(plan, "E")->roughness.max, 0.4);
   EXPECT_EQ(Find(plan, "E")->materials, (std::vector<std::string>{"water", "glass", "gold"}));
   EXPECT_FALSE(plan.schlickFavgFunction);
+}
+
+// A manifest's coats: spec_E and spec_Eavg over the coat roughness and a
+// listed eta axis at exactly the coat IORs, both sides (1.5 and 1.33 from
+// outside, 1/1.5 and 1/1.33 from the base beneath); the coat is also a
+// specular layer of E, Eavg and dfg.
+TEST(Plan, CoatsGetSpecularAlbedoAtExactlyTheirIorsBothSides) {
+  const Manifest m = ReadManifest(kPlans + "coat.json");
+  const BakePlan plan = MakePlan(m.materials, {});
+  const std::vector<double> etas{1 / 1.5, 1 / 1.33, 1.33, 1.5};
+  const PlannedTable *e = Find(plan, "spec_E"), *average = Find(plan, "spec_Eavg");
+  ASSERT_NE(e, nullptr);
+  ASSERT_NE(average, nullptr);
+  EXPECT_EQ(e->definition, &TableNamed("spec_E"));
+  EXPECT_EQ(e->etas, etas);
+  EXPECT_EQ(e->x.name, "mu");
+  EXPECT_EQ(e->x.count, 32);
+  EXPECT_EQ(e->y.nodes, std::vector<double>{0.1});  // both coats at 0.1
+  EXPECT_TRUE(e->z.listed());
+  EXPECT_EQ(e->z.name, "eta");
+  EXPECT_EQ(e->z.nodes, etas);
+  EXPECT_EQ(average->x.nodes, std::vector<double>{0.1});
+  EXPECT_TRUE(average->y.listed());
+  EXPECT_EQ(average->y.nodes, etas);
+  EXPECT_EQ(e->materials, (std::vector<std::string>{"car paint", "lacquered wood"}));
+  EXPECT_EQ(average->materials, e->materials);
+  EXPECT_EQ(Find(plan, "E")->roughness.values, (std::vector<double>{0.1, 0.3, 0.4, 0.6}));
+  EXPECT_EQ(Find(plan, "dfg")->roughness.values, (std::vector<double>{0.1, 0.3, 0.4, 0.6}));
+  EXPECT_EQ(Omitted(plan, "spec_E"), "");
+
+  // Layering is part of energy compensation: off with it, and said why.
+  PlanOptions off;
+  off.compensation = false;
+  const BakePlan none = MakePlan(m.materials, off);
+  EXPECT_EQ(Find(none, "spec_E"), nullptr);
+  EXPECT_EQ(Omitted(none, "spec_Eavg"),
+            "energy compensation (and with it energy-conserving layering) is off "
+            "(--no-compensation)");
+  std::vector<MaterialSpec> own{m.materials[0], m.materials[2]};
+  own[0].compensation = false;
+  EXPECT_EQ(Omitted(MakePlan(own, {}), "spec_E"),
+            "energy compensation (and with it energy-conserving layering) is off for every "
+            "material with a coat (each sets it false)");
+  const BakePlan bare = MakePlan({m.materials[2]}, {});
+  EXPECT_EQ(Find(bare, "spec_E"), nullptr);
+  EXPECT_EQ(Omitted(bare, "spec_E"),
+            "no material has a coat (KHR_materials_clearcoat with a clearcoatFactor above 0, "
+            "or a manifest's \"coat\")");
+
+  // The JSON: the listed etas, and each coated material's coat.
+  const auto j = nlohmann::json::parse(PlanJson(plan));
+  const auto &spec = j["tables"][j["tables"].size() - 2];
+  EXPECT_EQ(spec["name"], "spec_E");
+  EXPECT_EQ(spec["eta"], etas);
+  EXPECT_EQ(spec["roughness"]["values"], std::vector<double>{0.1});
+  EXPECT_EQ(spec["size"], (std::vector<int>{32, 1, 4}));
+  EXPECT_EQ(j["tables"].back()["name"], "spec_Eavg");
+  EXPECT_EQ(j["tables"].back()["size"], (std::vector<int>{1, 4}));
+  EXPECT_EQ(j["materials"][0]["coat"]["eta"], (std::vector<double>{1 / 1.5, 1.5}));
+  EXPECT_EQ(j["materials"][0]["coat"]["roughness"][0]["max"], 0.1);
+  EXPECT_FALSE(j["materials"][2].contains("coat"));
+}
+
+// F82-tint metals: f82 (the split sum's C) over the base roughness of those
+// lit by IBL, beside dfg; Favg over the F0 and tint of those compensated,
+// F0 x tint as the f82 variant of Favg takes them.
+TEST(Plan, F82MetalsGetTheF82TermAndTheirFavg) {
+  const Manifest m = ReadManifest(kPlans + "f82.json");
+  const BakePlan plan = MakePlan(m.materials, {});
+  const PlannedTable *c = Find(plan, "f82");
+  ASSERT_NE(c, nullptr);
+  EXPECT_EQ(c->definition, &TableNamed("f82"));
+  // brass 0.25, chrome 0.1 and 0.3; matte gold has ibl false.
+  EXPECT_EQ(c->roughness.values, (std::vector<double>{0.1, 0.25, 0.3}));
+  EXPECT_EQ(c->y.nodes, (std::vector<double>{0.1, 0.25, 0.3}));
+  EXPECT_EQ(c->x.count, 128);  // dfg's texels
+  EXPECT_EQ(c->materials, (std::vector<std::string>{"brass", "chrome"}));
+  // dfg (water too) covers the same roughness: C sits at dfg's texels.
+  EXPECT_EQ(Find(plan, "dfg")->y.nodes, c->y.nodes);
+
+  // Two Fresnel models: Favg_f82 and Favg_dielectric.
+  const PlannedTable *favg = Find(plan, "Favg_f82");
+  ASSERT_NE(favg, nullptr);
+  ASSERT_NE(Find(plan, "Favg_dielectric"), nullptr);
+  EXPECT_EQ(favg->fresnel, FresnelModel::kF82);
+  EXPECT_EQ(favg->x.name, "F0");
+  EXPECT_EQ(favg->x.nodes, (std::vector<double>{0.55, 0.78, 0.9, 0.91}));
+  // Tints 0.7, 0.8 and the range [0.5, 0.75]: linear over [0.5, 0.8] with
+  // the full [0, 1] axis's spacing, ceil(32 x 0.3) = 10 texels.
+  EXPECT_EQ(favg->y.name, "tint");
+  EXPECT_FALSE(favg->y.listed());
+  EXPECT_EQ(favg->y.min, 0.5);
+  EXPECT_EQ(favg->y.max, 0.8);
+  EXPECT_EQ(favg->y.count, 10);
+  EXPECT_EQ(favg->materials, (std::vector<std::string>{"brass", "chrome", "matte gold"}));
+  EXPECT_FALSE(plan.schlickFavgFunction);
+
+  const auto j = nlohmann::json::parse(PlanJson(plan));
+  nlohmann::json favgJson;
+  for (const auto &t : j["tables"])
+    if (t["name"] == "Favg_f82") favgJson = t;
+  EXPECT_EQ(favgJson["fresnel"], "f82");
+  EXPECT_EQ(favgJson["F0"]["values"], (std::vector<double>{0.55, 0.78, 0.9, 0.91}));
+  EXPECT_EQ(favgJson["tint"]["min"], 0.5);
+  EXPECT_FALSE(favgJson["tint"].contains("values"));
+  // One F0 and one tint: the material's F_avg, 20/21 F0 + 1/21 - a / 126
+  // with a = Schlick(F0, 1/7) (1 - tint) / ((1/7) (6/7)^6).
+  const auto &gold = j["materials"][2];
+  const double schlick = 0.9 + 0.1 * std::pow(6.0 / 7.0, 5);
+  const double a = schlick * (1.0 - 0.8) / (std::pow(6.0 / 7.0, 6) / 7.0);
+  EXPECT_EQ(gold["F0"], 0.9);
+  EXPECT_EQ(gold["tint"], 0.8);
+  EXPECT_NEAR(gold["Favg"].get<double>(), 0.9 * 20.0 / 21.0 + 1.0 / 21.0 - a / 126.0, 1e-15);
+  EXPECT_FALSE(j["materials"][0].contains("Favg"));  // brass: two F0
+
+  // Without IBL: no f82, and why; without F82 metals: why not.
+  PlanOptions noIbl;
+  noIbl.ibl = false;
+  EXPECT_EQ(Find(MakePlan(m.materials, noIbl), "f82"), nullptr);
+  EXPECT_EQ(Omitted(MakePlan(m.materials, noIbl), "f82"), "image-based lighting is off (--no-ibl)");
+  std::vector<MaterialSpec> noIblMetal{m.materials[2], m.materials[3]};
+  EXPECT_EQ(Omitted(MakePlan(noIblMetal, {}), "f82"),
+            "image-based lighting is off for every material with the F82-tint Fresnel (each "
+            "sets it false)");
+  EXPECT_NE(Omitted(MakePlan({m.materials[3]}, {}), "f82").find("no material uses the F82-tint"),
+            std::string::npos);
 }
 
 TEST(Plan, VariantsOfOneTableGetSuffixes) {
@@ -305,7 +448,8 @@ TEST(PlanCli, JsonHasTheDocumentedShape) {
     omitted.push_back(o["name"]);
     EXPECT_FALSE(o["reason"].get<std::string>().empty());
   }
-  EXPECT_EQ(omitted, (std::vector<std::string>{"Favg", "dfg"}));
+  // No F82 metal, and no coat.
+  EXPECT_EQ(omitted, (std::vector<std::string>{"Favg", "dfg", "f82", "spec_E", "spec_Eavg"}));
   // Transmission and volume are baked now (issue 15): anisotropy and
   // iridescence remain.
   ASSERT_EQ(j["unsupported"].size(), 2u);

@@ -82,16 +82,27 @@ TEST(SceneReader, ClearcoatCountsWhenItsFactorIsPositive) {
   EXPECT_EQ(paint.roughness[1].layer, "clearcoat");
   EXPECT_EQ(paint.roughness[1].min, 0.1);
   EXPECT_EQ(paint.roughness[1].max, 0.1);
+  // The coat, a dielectric of glTF's fixed clearcoat IOR 1.5: both sides,
+  // for spec_E, over its roughness alone.
+  EXPECT_EQ(paint.coatEta, (std::vector<double>{1 / 1.5, 1.5}));
+  ASSERT_EQ(paint.coatRoughness.size(), 1u);
+  EXPECT_EQ(paint.coatRoughness[0].layer, "clearcoat");
+  EXPECT_EQ(paint.coatRoughness[0].min, 0.1);
   // clearcoatFactor 0: no layer, its roughness 0.9 does not count.
   const MaterialSpec &off = Named(ms, "coat off");
   ASSERT_EQ(off.roughness.size(), 1u);
   EXPECT_EQ(off.roughness[0].layer, "base");
   EXPECT_FALSE(off.notes.empty());
+  EXPECT_TRUE(off.coatEta.empty());
+  EXPECT_TRUE(off.coatRoughness.empty());
   // A clearcoat roughness texture: [0, clearcoatRoughnessFactor].
   const MaterialSpec &textured = Named(ms, "textured coat");
   ASSERT_EQ(textured.roughness.size(), 2u);
   EXPECT_EQ(textured.roughness[1].min, 0.0);
   EXPECT_EQ(textured.roughness[1].max, 0.2);
+  ASSERT_EQ(textured.coatRoughness.size(), 1u);
+  EXPECT_EQ(textured.coatRoughness[0].min, 0.0);
+  EXPECT_EQ(textured.coatRoughness[0].max, 0.2);
 }
 
 TEST(SceneReader, RecognisesWhatItCannotBake) {

@@ -354,5 +354,44 @@ TEST(F82Favg, BakeEvalAndCheck) {
   fs::remove_all(out);
 }
 
+// A manifest of F82-tint metals: planned, baked (f82 at dfg's texels, and
+// Favg over the F0 and tint used) and checked, C <= B / 4 included, since
+// dfg and f82 share their axes here.
+TEST(F82Table, ManifestMetalsArePlannedBakedAndChecked) {
+  const fs::path out = test::Scratch("f82_manifest");
+  const test::CommandResult bake =
+      Lutbake("bake --out " + out.string() +
+              " --manifest " LUTBAKE_TEST_DATA
+              "/plans/f82.json --tables f82,dfg,Favg --size 8 --format bin");
+  ASSERT_EQ(bake.status, 0) << bake.output;
+  EXPECT_EQ(test::FileNames(out), (std::vector<std::string>{"Favg_dielectric.bin", "Favg_f82.bin",
+                                                            "dfg.bin", "f82.bin"}));
+  const Table c = ReadBinaryTable((out / "f82.bin").string());
+  EXPECT_EQ(c.x.count, 8);
+  EXPECT_EQ(c.y.nodes, (std::vector<double>{0.1, 0.25, 0.3}));
+  EXPECT_EQ(*c.FindMetadata("planMaterials"), "brass, chrome");
+  const Table favg = ReadBinaryTable((out / "Favg_f82.bin").string());
+  EXPECT_EQ(*favg.FindMetadata("fresnel"), "f82");
+  EXPECT_EQ(favg.x.nodes, (std::vector<double>{0.55, 0.78, 0.9, 0.91}));
+  // Tint: linear over [0.5, 0.8], 8 x 0.3 rounded up = 3 texels.
+  EXPECT_EQ(favg.y.min, 0.5);
+  EXPECT_EQ(favg.y.max, 0.8);
+  EXPECT_EQ(favg.y.count, 3);
+  for (int x = 0; x < favg.width(); ++x)
+    for (int y = 0; y < favg.height(); ++y)
+      EXPECT_EQ(
+          favg.values[favg.index(x, y, 0)],
+          static_cast<float>(F82TintFresnelAverage(favg.x.nodes[x], favg.y.TexelCenter(y)).value));
+  const test::CommandResult check = Lutbake("check " + out.string() + " --json", true);
+  EXPECT_EQ(check.status, 0) << check.output;
+  const nlohmann::json report = nlohmann::json::parse(check.output);
+  std::map<std::string, std::string> status;
+  for (const auto &r : report["checks"])
+    status[std::string(r["subject"]) + " " + std::string(r["check"])] = r["status"];
+  for (const char *expected : {"f82 texels", "f82+dfg at most", "Favg_f82 closed form"})
+    EXPECT_EQ(status[expected], "pass") << expected << "\n" << check.output;
+  fs::remove_all(out);
+}
+
 }  // namespace
 }  // namespace lutbake

@@ -15,14 +15,21 @@
 //         "fresnel": {"model": "dielectric", "eta": 1.5},   // default {"model": "schlick"};
 //                                                           //   schlick: optional "f0" in [0, 1]
 //                                                           //   dielectric: "eta" in (0, 10]
-//                                                           //   conductor: "eta" in (0, 10], "k"
-//                                                           in [0, 20]
+//                                                           //   conductor: "eta" in (0, 10],
+//                                                           //     "k" in [0, 20]
+//                                                           //   f82: "f0" and "tint" in [0, 1]
 //                                                           //   each a number, list or {min, max}
 //         "ibl": true, "compensation": true,                // optional, per material
 //         "unlit": false,                                   // optional: true needs no table
-//         "sheenRoughness": 0.5                             // optional: a sheen layer
+//         "sheenRoughness": 0.5,                            // optional: a sheen layer
 //                                                           //   (KHR_materials_sheen), as
 //                                                           //   "roughness" but never snapped
+//         "coat": {"eta": 1.5, "roughness": 0.1}            // optional: a dielectric coat;
+//                                                           //   "eta" in (0, 10], a number or a
+//                                                           //   list, never a range (spec_E is
+//                                                           //   baked at exactly those IORs and
+//                                                           //   their inverses); "roughness" as
+//                                                           //   the material's, a layer "coat"
 //       }
 //     ]
 //   }

@@ -46,6 +46,10 @@ struct FresnelUse {
   FresnelModel model = FresnelModel::kSchlick;
   ParameterUse eta;  // dielectric and conductor: relative IOR (real part)
   ParameterUse k;    // conductor: extinction coefficient
+  // F82 tint (fresnel.h): F0 and the tint, reflectances in [0, 1], of any
+  // colour channel.
+  ParameterUse f0;
+  ParameterUse tint;
   // Schlick, when the file fixes them: F0 per colour channel (one value, or
   // r, g, b) and F90. For glTF these are the dielectric part's (from
   // KHR_materials_ior and _specular; the metal part's F0 is the base colour,
@@ -75,6 +79,13 @@ struct MaterialSpec {
   // transmission. Its roughness is the base layer's (transmissionRoughness).
   std::vector<double> transmissionEta;
   std::vector<RoughnessUse> transmissionRoughness;
+  // A dielectric coat (a manifest's "coat", glTF's KHR_materials_clearcoat
+  // at its fixed IOR 1.5): the relative IORs of its interface, both sides
+  // (eta seen from outside, 1 / eta from the base beneath), and its
+  // roughness. Empty without a coat. The coat is also a specular layer of
+  // `roughness` (layer "coat" or "clearcoat").
+  std::vector<double> coatEta;
+  std::vector<RoughnessUse> coatRoughness;
   // Per-material lighting; unset means "as the manifest or command line says".
   std::optional<bool> ibl;
   std::optional<bool> compensation;

@@ -10,7 +10,11 @@
 //     the material itself says otherwise (the command line wins).
 //   - Favg only for compensated materials whose Fresnel is not Schlick's
 //     (Schlick's F_avg = 20/21 F0 + 1/21 F90 exactly: the Favg.h header then
-//     carries that function and no table), over just the IORs used.
+//     carries that function and no table), over just the IORs used (eta,
+//     eta x k), or for F82-tint metals the F0 x tint they use.
+//   - f82 for the F82-tint metals lit by image-based lighting, over their
+//     base roughness: their split-sum specular albedo is F0 A + F90 B - a C,
+//     with dfg's A, B and f82's C.
 //   - The roughness axis of E, E_avg and dfg covers what their materials
 //     use, every layer (clearcoat too): a layer with a roughness texture
 //     covers [0, factor], one without exactly its factor. When every use is
@@ -25,12 +29,17 @@
 //   - Tables are named E, Eavg, dfg, Favg; when a plan needs two variants of
 //     one (GGX and Beckmann materials, say), the ones that are not GGX with
 //     the height-correlated Smith term get a suffix: E_beckmann,
-//     E_separable, E_beckmann_separable; Favg_dielectric and Favg_conductor
-//     when both appear.
+//     E_separable, E_beckmann_separable; Favg_dielectric, Favg_conductor
+//     and Favg_f82 when two appear.
 //   - glass_E and glass_Eavg for materials with transmission, over their
 //     roughness and exactly the relative IORs they use, both sides (ior and
 //     1 / ior) as a listed eta axis: glass at 1.5 alone gets the two slices
 //     eta = 1.5 and 1/1.5, nothing between.
+//   - spec_E and spec_Eavg for compensated materials with a dielectric coat
+//     (a manifest's "coat"; glTF's KHR_materials_clearcoat, whose IOR is
+//     1.5), over the coat roughness and a listed eta axis at exactly the
+//     coat IORs, both sides, as for glass: energy-conserving layering scales
+//     the base by 1 - spec_E (light leaving through the coat: eta < 1).
 //   - Features lutbake does not bake (volume absorption, ...) are listed as
 //     unsupported; the plan still holds the tables of those materials'
 //     other lobes.
@@ -76,9 +85,10 @@ struct PlannedTable {
   FresnelModel fresnel = FresnelModel::kSchlick;  // Favg
   CoveredRange roughness;                         // E, Eavg, dfg
   CoveredRange eta, k;                            // Favg (k: conductor only)
+  CoveredRange f0, tint;                          // Favg f82
   Axis x, y;                                      // the axes it is baked on
   Axis z = LinearAxis("", 0.0, 1.0, 1);           // a 3D table's third axis (glass_E: eta)
-  std::vector<double> etas;                       // glass: the relative IORs, both sides
+  std::vector<double> etas;                       // glass, spec: the relative IORs, both sides
   std::vector<std::string> materials;             // the materials that need it
 };
 

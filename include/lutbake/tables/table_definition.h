@@ -140,6 +140,12 @@ enum class PlanRole {
   kFresnelAverage,      // F_avg of compensated non-Schlick Fresnel (Favg)
   kSheenAlbedoScaling,  // KHR_materials_sheen's albedo scaling (sheen_E)
   kGlassCompensation,   // energy compensation of rough transmission (glass_E, glass_Eavg)
+  // Energy-conserving layering under a dielectric coat or specular layer:
+  // the base is scaled by 1 - E of the coat (spec_E, spec_Eavg).
+  kDielectricLayering,
+  // The F82-tint metal's third split-sum term, specular albedo
+  // F0 A + F90 B - a C (f82's C, beside dfg's A and B).
+  kF82ImageBasedLighting,
 };
 
 // What a generated C++ header says about the table besides its axes.
