@@ -257,6 +257,8 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
 
   bool created = false;
   if (const int status = PrepareOutputOrComplain("bake", o.outDir, &created)) return status;
+  // What earlier runs killed here left: temporaries no live process owns.
+  RemoveStaleTemporaries(o.outDir);
 
   const int threads = ThreadCount(o.threads);
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
@@ -286,12 +288,16 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
       const std::filesystem::path base = std::filesystem::path(o.outDir) / job.name;
       for (const auto &writer : writers) {
         const std::string path = base.string() + writer->extension();
-        writer->Write(table, output.Add(path), writeOptions);
+        output.Write(path, [&](const std::string &temporary) {
+          writer->Write(table, temporary, writeOptions);
+        });
         files.push_back(path);
       }
       if (o.errorMap) {
         const std::string path = base.string() + ".err.exr";
-        MakeExrWriter()->Write(ErrorMapOf(table), output.Add(path), writeOptions);
+        output.Write(path, [&](const std::string &temporary) {
+          MakeExrWriter()->Write(ErrorMapOf(table), temporary, writeOptions);
+        });
         files.push_back(path);
       }
       const size_t texels = table.texelCount();
@@ -343,11 +349,13 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
     };
     if (schlickFavgHeader && headers) {
       const std::string path = (std::filesystem::path(o.outDir) / "Favg.h").string();
-      WriteSchlickFavgHeader(
-          output.Add(path), writeOptions,
-          functionHeaderMetadata(
-              {{"table", "Favg"},
-               {"content", "closed form (Schlick), no table: F_avg = 20/21 F0 + 1/21 F90"}}));
+      output.Write(path, [&](const std::string &temporary) {
+        WriteSchlickFavgHeader(
+            temporary, writeOptions,
+            functionHeaderMetadata(
+                {{"table", "Favg"},
+                 {"content", "closed form (Schlick), no table: F_avg = 20/21 F0 + 1/21 F90"}}));
+      });
       nlohmann::ordered_json entry;
       entry["name"] = "Favg";
       entry["closedForm"] = "F_avg = 20/21 F0 + 1/21 F90";
@@ -369,10 +377,12 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
       if (!averaged) continue;
       const std::string path =
           (std::filesystem::path(o.outDir) / ("kulla_conty" + suffix + ".h")).string();
-      WriteKullaContyHeader(
-          output.Add(path), writeOptions, suffix,
-          functionHeaderMetadata(
-              {{"helpers", "Kulla-Conty f_ms and F_ms over E" + suffix + " and Eavg" + suffix}}));
+      output.Write(path, [&](const std::string &temporary) {
+        WriteKullaContyHeader(
+            temporary, writeOptions, suffix,
+            functionHeaderMetadata(
+                {{"helpers", "Kulla-Conty f_ms and F_ms over E" + suffix + " and Eavg" + suffix}}));
+      });
       summary["helpers"].push_back(path);
     }
     if (!unreached.empty()) {
