@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "cli_util.h"
+#include "interrupt.h"
 #include "lutbake/formats/atomic_output.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/plans/plan.h"
@@ -150,6 +151,8 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
   if (const int status = ApplySamplingOptions("bake", o.sampling, &settings)) return status;
   const bool tolerance = settings.tolerance > 0.0;
   settings.commandLine = commandLine;
+  const InterruptGuard interrupt;
+  settings.cancellation = &interrupt.token();
 
   std::vector<BakeJob> jobs;
   bool schlickFavgHeader = false;
@@ -288,6 +291,7 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
       const std::filesystem::path base = std::filesystem::path(o.outDir) / job.name;
       for (const auto &writer : writers) {
         const std::string path = base.string() + writer->extension();
+        interrupt.token().ThrowIfCancelled();
         output.Write(path, [&](const std::string &temporary) {
           writer->Write(table, temporary, writeOptions);
         });
@@ -295,6 +299,7 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
       }
       if (o.errorMap) {
         const std::string path = base.string() + ".err.exr";
+        interrupt.token().ThrowIfCancelled();
         output.Write(path, [&](const std::string &temporary) {
           MakeExrWriter()->Write(ErrorMapOf(table), temporary, writeOptions);
         });
@@ -396,7 +401,19 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
       }
       return 1;
     }
+    // The last moment a signal stops the run; one that arrives during the
+    // commit (milliseconds: renames) lets it finish.
+    interrupt.token().ThrowIfCancelled();
     output.Commit();
+  } catch (const Cancelled &c) {
+    // `output` is gone: its temporaries with it.
+    if (created) {
+      std::error_code ec;
+      std::filesystem::remove(o.outDir, ec);  // only succeeds if still empty
+    }
+    std::cerr << "lutbake bake: interrupted by " << SignalName(c.reason())
+              << "; nothing written to " << o.outDir << "\n";
+    return 128 + c.reason();
   } catch (const IoError &e) {
     std::cerr << "lutbake bake: " << e.what() << "\n";
     if (created) {

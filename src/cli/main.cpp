@@ -6,6 +6,7 @@
 #include "bake_command.h"
 #include "check_command.h"
 #include "eval_command.h"
+#include "interrupt.h"
 #include "lutbake/tables/bake.h"
 #include "plan_command.h"
 #include "report_command.h"
@@ -57,6 +58,7 @@ int main(int argc, char **argv) {
       "report", "Measure real error against run time for every estimator (csv, md, svg)");
   lutbake::cli::SetupReportCommand(*report, reportOptions);
 
+  lutbake::cli::IgnoreFileSizeSignal();
   std::string commandLine = "lutbake";
   for (int i = 1; i < argc; ++i) commandLine += " " + QuoteArgument(argv[i]);
 
