@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "cli_util.h"
+#include "interrupt.h"
 #include "lutbake/formats/atomic_output.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/plans/plan.h"
@@ -150,6 +151,8 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
   if (const int status = ApplySamplingOptions("bake", o.sampling, &settings)) return status;
   const bool tolerance = settings.tolerance > 0.0;
   settings.commandLine = commandLine;
+  const InterruptGuard interrupt;
+  settings.cancellation = &interrupt.token();
 
   std::vector<BakeJob> jobs;
   bool schlickFavgHeader = false;
@@ -257,6 +260,8 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
 
   bool created = false;
   if (const int status = PrepareOutputOrComplain("bake", o.outDir, &created)) return status;
+  // What earlier runs killed here left: temporaries no live process owns.
+  RemoveStaleTemporaries(o.outDir);
 
   const int threads = ThreadCount(o.threads);
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
@@ -286,12 +291,18 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
       const std::filesystem::path base = std::filesystem::path(o.outDir) / job.name;
       for (const auto &writer : writers) {
         const std::string path = base.string() + writer->extension();
-        writer->Write(table, output.Add(path), writeOptions);
+        interrupt.token().ThrowIfCancelled();
+        output.Write(path, [&](const std::string &temporary) {
+          writer->Write(table, temporary, writeOptions);
+        });
         files.push_back(path);
       }
       if (o.errorMap) {
         const std::string path = base.string() + ".err.exr";
-        MakeExrWriter()->Write(ErrorMapOf(table), output.Add(path), writeOptions);
+        interrupt.token().ThrowIfCancelled();
+        output.Write(path, [&](const std::string &temporary) {
+          MakeExrWriter()->Write(ErrorMapOf(table), temporary, writeOptions);
+        });
         files.push_back(path);
       }
       const size_t texels = table.texelCount();
@@ -343,11 +354,13 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
     };
     if (schlickFavgHeader && headers) {
       const std::string path = (std::filesystem::path(o.outDir) / "Favg.h").string();
-      WriteSchlickFavgHeader(
-          output.Add(path), writeOptions,
-          functionHeaderMetadata(
-              {{"table", "Favg"},
-               {"content", "closed form (Schlick), no table: F_avg = 20/21 F0 + 1/21 F90"}}));
+      output.Write(path, [&](const std::string &temporary) {
+        WriteSchlickFavgHeader(
+            temporary, writeOptions,
+            functionHeaderMetadata(
+                {{"table", "Favg"},
+                 {"content", "closed form (Schlick), no table: F_avg = 20/21 F0 + 1/21 F90"}}));
+      });
       nlohmann::ordered_json entry;
       entry["name"] = "Favg";
       entry["closedForm"] = "F_avg = 20/21 F0 + 1/21 F90";
@@ -369,10 +382,12 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
       if (!averaged) continue;
       const std::string path =
           (std::filesystem::path(o.outDir) / ("kulla_conty" + suffix + ".h")).string();
-      WriteKullaContyHeader(
-          output.Add(path), writeOptions, suffix,
-          functionHeaderMetadata(
-              {{"helpers", "Kulla-Conty f_ms and F_ms over E" + suffix + " and Eavg" + suffix}}));
+      output.Write(path, [&](const std::string &temporary) {
+        WriteKullaContyHeader(
+            temporary, writeOptions, suffix,
+            functionHeaderMetadata(
+                {{"helpers", "Kulla-Conty f_ms and F_ms over E" + suffix + " and Eavg" + suffix}}));
+      });
       summary["helpers"].push_back(path);
     }
     if (!unreached.empty()) {
@@ -386,7 +401,19 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
       }
       return 1;
     }
+    // The last moment a signal stops the run; one that arrives during the
+    // commit (milliseconds: renames) lets it finish.
+    interrupt.token().ThrowIfCancelled();
     output.Commit();
+  } catch (const Cancelled &c) {
+    // `output` is gone: its temporaries with it.
+    if (created) {
+      std::error_code ec;
+      std::filesystem::remove(o.outDir, ec);  // only succeeds if still empty
+    }
+    std::cerr << "lutbake bake: interrupted by " << SignalName(c.reason())
+              << "; nothing written to " << o.outDir << "\n";
+    return 128 + c.reason();
   } catch (const IoError &e) {
     std::cerr << "lutbake bake: " << e.what() << "\n";
     if (created) {

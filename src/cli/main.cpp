@@ -7,6 +7,7 @@
 #include "check_command.h"
 #include "eval_command.h"
 #include "furnace_command.h"
+#include "interrupt.h"
 #include "lutbake/tables/bake.h"
 #include "plan_command.h"
 #include "report_command.h"
@@ -63,6 +64,7 @@ int main(int argc, char **argv) {
       "furnace", "The white furnace of a classic reflection model: albedo, average, pictures");
   lutbake::cli::SetupFurnaceCommand(*furnace, furnaceOptions);
 
+  lutbake::cli::IgnoreFileSizeSignal();
   std::string commandLine = "lutbake";
   for (int i = 1; i < argc; ++i) commandLine += " " + QuoteArgument(argv[i]);
 

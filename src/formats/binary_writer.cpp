@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "file_io.h"
 #include "lutbake/formats/binary_format.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/tables/table_definition.h"
@@ -113,10 +114,7 @@ class BinaryWriter final : public TableWriter {
     const std::vector<double> bounds = StoredBounds(table, type);
     for (double v : table.values) wide ? PutF64(out, v) : PutF32(out, static_cast<float>(v));
     for (double e : bounds) wide ? PutF64(out, e) : PutF32(out, static_cast<float>(e));
-    std::ofstream file(path, std::ios::binary | std::ios::trunc);
-    file.write(out.data(), static_cast<std::streamsize>(out.size()));
-    file.close();
-    if (!file) throw IoError("cannot write " + path);
+    WriteWholeFile(path, out);
   }
 };
 

@@ -8,9 +8,9 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
+#include "file_io.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/tables/table_definition.h"
 
@@ -38,13 +38,6 @@ std::string OneLine(const std::string &text) {
 void WriteMetadataComment(std::ostream &h,
                           const std::vector<std::pair<std::string, std::string>> &metadata) {
   for (const auto &[key, value] : metadata) h << "//   " << key << ": " << OneLine(value) << "\n";
-}
-
-void WriteTextFile(const std::string &path, const std::string &text) {
-  std::ofstream file(path, std::ios::trunc);
-  file << text;
-  file.close();
-  if (!file) throw IoError("cannot write " + path);
 }
 
 // A C++ string literal holding `text` exactly.
@@ -356,7 +349,7 @@ class CppHeaderWriter final : public TableWriter {
     }
     if (notes.helpers) h << notes.helpers("lookup_" + name);
     h << "}  // namespace " << ns << "\n";
-    WriteTextFile(path, h.str());
+    WriteWholeFile(path, h.str());
   }
 };
 
@@ -385,7 +378,7 @@ void WriteSchlickFavgHeader(const std::string &path, const WriteOptions &options
        "                            static_cast<double>(F90) * (1.0 / 21.0));\n}\n\n";
   h << "inline float lookup_Favg(float F0) { return favg_schlick(F0, 1.0f); }\n\n";
   h << "}  // namespace " << options.headerNamespace << "\n";
-  WriteTextFile(path, h.str());
+  WriteWholeFile(path, h.str());
 }
 
 void WriteKullaContyHeader(const std::string &path, const WriteOptions &options,
@@ -441,7 +434,7 @@ void WriteKullaContyHeader(const std::string &path, const WriteOptions &options,
     << "  return denominator > 0.0 ? static_cast<float>(f * f * eavg / denominator) : 0.0f;\n"
     << "}\n\n";
   h << "}  // namespace " << options.headerNamespace << "\n";
-  WriteTextFile(path, h.str());
+  WriteWholeFile(path, h.str());
 }
 
 std::unique_ptr<TableWriter> MakeCppHeaderWriter() { return std::make_unique<CppHeaderWriter>(); }

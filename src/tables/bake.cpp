@@ -120,6 +120,8 @@ Table BakeTableOn(const TableDefinition &definition, const BakeSettings &s, cons
   tbb::parallel_for(tbb::blocked_range<size_t>(0, texels),
                     [&](const tbb::blocked_range<size_t> &r) {
                       for (size_t k = r.begin(); k != r.end(); ++k) {
+                        // Thrown out of parallel_for, which cancels the other tasks.
+                        if (s.cancellation) s.cancellation->ThrowIfCancelled();
                         // Column by column (k runs down each column of constant mu): the
                         // quadrature's azimuthal nodes depend on mu only, and a thread
                         // that stays in a column reuses them. Each texel is computed

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "lutbake/formats/atomic_output.h"
 #include "support/cli_run.h"
 
 namespace {
@@ -93,7 +94,8 @@ void ExpectSameFilesForThreadCounts(const std::string &options, int files) {
   int compared = 0;
   for (const auto &entry : fs::directory_iterator(dirs[0])) {
     const std::string name = entry.path().filename().string();
-    if (name.find(".tmp") != std::string::npos) ADD_FAILURE() << "temporary left: " << name;
+    if (lutbake::IsTemporaryName(name) || name.find(".tmp") != std::string::npos)
+      ADD_FAILURE() << "temporary left: " << name;
     std::vector<std::string> contents;
     for (const fs::path &dir : dirs) {
       ASSERT_TRUE(fs::exists(dir / name)) << name;

@@ -6,8 +6,10 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <mutex>
 
 #include "lutbake/integrators/albedo_estimator.h"
 #include "lutbake/integrators/reference_integrator.h"
@@ -173,6 +175,47 @@ TEST(Bake, BitIdenticalForOneAndTwoThreads) {
               std::memcmp(one.errors.data(), two.errors.data(), one.errors.size() * sizeof(double)))
         << kind->Name();
   }
+}
+
+TEST(Bake, CancelledTokenStopsTheBakeBetweenTexels) {
+  // Cancelled before it starts: no texel is computed (the progress callback,
+  // called after every block of texels, never runs) and Cancelled carries the
+  // reason.
+  CancellationToken token;
+  token.Cancel(15);
+  BakeSettings s = Small(64, 64);
+  s.cancellation = &token;
+  int calls = 0;
+  try {
+    BakeTable(TableNamed("E"), s, [&](double) { ++calls; });
+    ADD_FAILURE() << "a cancelled bake returned a table";
+  } catch (const Cancelled &c) {
+    EXPECT_EQ(c.reason(), 15);
+  }
+  EXPECT_EQ(calls, 0);
+
+  // Cancelled from inside, after the first block: the bake stops well before
+  // its last texel (progress stays below 1).
+  CancellationToken midway;
+  s.cancellation = &midway;
+  double last = 0.0;
+  std::mutex lock;
+  EXPECT_THROW(BakeTable(TableNamed("E"), s,
+                         [&](double done) {
+                           std::lock_guard<std::mutex> guard(lock);
+                           last = std::max(last, done);
+                           midway.Cancel(2);
+                         }),
+               Cancelled);
+  EXPECT_GT(last, 0.0);
+  EXPECT_LT(last, 1.0);
+
+  // The same settings with a token never cancelled bake as without one.
+  CancellationToken idle;
+  s.cancellation = &idle;
+  const Table with = BakeTable(TableNamed("E"), s);
+  s.cancellation = nullptr;
+  EXPECT_EQ(with.values, BakeTable(TableNamed("E"), s).values);
 }
 
 TEST(Bake, SeedChangesTheEstimateWithinItsError) {

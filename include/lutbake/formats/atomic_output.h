@@ -1,10 +1,32 @@
-// All-or-nothing output of several files. Each file is first written under a
-// temporary name in its destination directory ("<name>.tmp-<pid>-<n>"); Commit
-// renames them all to their final names. If anything throws before Commit,
-// the destructor removes every temporary file, so a failed bake leaves no
-// partial table and no temporary behind.
+// All-or-nothing output of a set of files (the tables of one bake).
+//
+// Writing. Each file is written through a temporary: an anonymous file in
+// its destination directory (O_TMPFILE, written through "/proc/self/fd/N")
+// where the file system has them, which the kernel frees whenever the
+// process ends; otherwise a named file "<final>.lutbake-tmp-<pid>-<n>". Every
+// temporary is held under an exclusive flock(2) for as long as its owner
+// lives, and is fsync'ed as soon as it has been written.
+//
+// Commit, in four steps, each file by file:
+//   1. link: each anonymous temporary gets a name, "<final>.lutbake-new-<pid>-<n>"
+//      (still locked), and the directory is fsync'ed;
+//   2. backup: each final name that exists is renamed away to
+//      "<final>.lutbake-old-<pid>-<n>";
+//   3. install: each temporary is renamed to its final name; the directory
+//      is fsync'ed;
+//   4. remove: the old files of step 2 are deleted.
+// So at every moment the final names of the set hold complete, durable files
+// of ONE run: until step 2 those of the previous run (all, then fewer), from
+// step 3 on those of this run (more, then all). A process killed in steps
+// 2-3 leaves a subset of one run's files and some temporaries; a process
+// killed at any other moment leaves the previous run's set or this run's,
+// whole. An error in steps 1-3 (a directory made read-only, a full disk)
+// undoes what was done and throws IoError; what a run with a read-only
+// directory cannot remove, and what a killed run leaves, is removed by
+// RemoveStaleTemporaries at the start of the next run in that directory.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,21 +37,54 @@ class AtomicOutputSet {
   AtomicOutputSet() = default;
   AtomicOutputSet(const AtomicOutputSet &) = delete;
   AtomicOutputSet &operator=(const AtomicOutputSet &) = delete;
+  // Discards every temporary unless Commit succeeded.
   ~AtomicOutputSet();
 
-  // Registers a final path and returns the temporary path to write instead.
+  // Registers a final path and returns the path to write it through (see
+  // above). Throws IoError, naming finalPath and the reason, if no temporary
+  // can be created (a missing or read-only directory, no space).
   std::string Add(const std::string &finalPath);
-  // Renames every temporary file to its final path; throws IoError on failure
-  // (after removing what is left of the temporaries).
+  // Add, then write(path) and fsync: an exception of write (IoError or
+  // another std::exception, such as OpenEXR's) is rethrown as IoError whose
+  // message names finalPath where it named the temporary.
+  void Write(const std::string &finalPath, const std::function<void(const std::string &)> &write);
+  // Steps 1-4 above; throws IoError on failure, after undoing steps 1-3 and
+  // removing the temporaries.
   void Commit();
+  // Removes every temporary (nothing under a final name is touched).
   void Discard();
+
+  // For tests: called after every rename, link or removal that Commit makes,
+  // with its step ("link", "backup", "install", "remove") and the file's
+  // index; a test kills the process there to see what each moment leaves.
+  using CommitObserver = std::function<void(const char *step, size_t index)>;
+  void SetCommitObserver(CommitObserver observer) { observer_ = std::move(observer); }
 
  private:
   struct Entry {
-    std::string finalPath, temporaryPath;
+    std::string finalPath;
+    std::string writePath;   // what Add returned
+    std::string namedPath;   // the temporary's name in the directory, once it has one
+    std::string backupPath;  // where step 2 moved the previous final file
+    int fd = -1;             // the temporary, open and flock'ed
+    int backupFd = -1;       // the previous final file, flock'ed once moved away
+    bool installed = false;
   };
+  void Undo();
+  void Observe(const char *step, size_t index) const;
   std::vector<Entry> entries_;
   bool committed_ = false;
+  CommitObserver observer_;
 };
+
+// Removes the temporaries in `directory` that lutbake runs left behind and
+// that no live process owns: names "<final>.lutbake-{tmp,new,old}-<pid>-<n>"
+// whose flock can be taken (a running owner holds it). Returns their paths.
+// A missing directory has none.
+std::vector<std::string> RemoveStaleTemporaries(const std::string &directory);
+
+// True for a name that RemoveStaleTemporaries would consider (a lutbake
+// temporary, alive or not).
+bool IsTemporaryName(const std::string &fileName);
 
 }  // namespace lutbake

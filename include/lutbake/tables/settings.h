@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "lutbake/core/cancellation.h"
 #include "lutbake/models/fresnel.h"
 #include "lutbake/models/ndf.h"
 #include "lutbake/models/sheen.h"
@@ -123,6 +124,9 @@ struct BakeSettings {
   bool allowQuadratureSwitch = true;
   uint64_t maxSamples = kDefaultMaxSamples;
   std::string commandLine;  // recorded in the metadata
+  // Polled between texels when set: a bake whose token is cancelled stops
+  // and throws Cancelled (cancellation.h). Not part of the result.
+  const CancellationToken *cancellation = nullptr;
 
   // The texels per axis of the table called `name` whose default is `defaultSize`.
   int SizeFor(const std::string &name, int defaultSize) const {

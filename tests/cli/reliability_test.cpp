@@ -1,0 +1,346 @@
+// `lutbake bake` under kills, signals, a full disk, a file size limit and a
+// directory made read-only: no final name ever holds a partial file or a
+// file of another run than the rest of the set, the next run cleans up and
+// succeeds, SIGINT / SIGTERM end with 130 / 143 and one line, and write
+// errors end with 1, the file's name and the reason.
+#include <fcntl.h>
+#include <grp.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/mount.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "lutbake/formats/atomic_output.h"
+#include "lutbake/formats/binary_format.h"
+#include "lutbake/formats/table_reader.h"
+#include "lutbake/formats/writer.h"
+#include "support/cli_run.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+// How to start a child: a file size limit, another user.
+struct SpawnOptions {
+  long fileSizeLimit = -1;  // bytes; RLIMIT_FSIZE, SIGXFSZ left at its default
+  bool asNobody = false;    // setuid/setgid 65534 (root ignores permissions)
+};
+
+// Starts `lutbake args...` with stdout and stderr in `log`.
+pid_t Spawn(const std::vector<std::string> &args, const fs::path &log,
+            const SpawnOptions &options = {}) {
+  std::vector<std::string> all = {LUTBAKE_BINARY};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char *> argv;
+  for (std::string &a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const std::string logPath = log.string();
+  const pid_t pid = ::fork();
+  if (pid != 0) return pid;
+  // The child: only async-signal-safe calls until exec.
+  const int fd = ::open(logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
+  if (fd < 0) ::_exit(126);
+  ::dup2(fd, 1);
+  ::dup2(fd, 2);
+  if (options.fileSizeLimit >= 0) {
+    const rlimit limit{static_cast<rlim_t>(options.fileSizeLimit),
+                       static_cast<rlim_t>(options.fileSizeLimit)};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+  }
+  if (options.asNobody &&
+      (::setgroups(0, nullptr) != 0 || ::setgid(65534) != 0 || ::setuid(65534) != 0))
+    ::_exit(125);
+  ::execv(argv[0], argv.data());
+  ::_exit(127);
+}
+
+// Waits at most `limit` for the child; its raw wait status, or -1 (then it
+// is killed).
+int WaitFor(pid_t pid, std::chrono::milliseconds limit) {
+  const auto end = Clock::now() + limit;
+  int status = 0;
+  while (Clock::now() < end) {
+    const pid_t r = ::waitpid(pid, &status, WNOHANG);
+    if (r == pid) return status;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ::kill(pid, SIGKILL);
+  ::waitpid(pid, &status, 0);
+  return -1;
+}
+
+std::string ReadAll(const fs::path &p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
+std::map<std::string, std::string> Contents(const fs::path &dir) {
+  std::map<std::string, std::string> files;
+  if (!fs::exists(dir)) return files;
+  for (const auto &entry : fs::directory_iterator(dir))
+    files[entry.path().filename().string()] = ReadAll(entry.path());
+  return files;
+}
+
+std::vector<std::string> Lines(const std::string &text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+// The set every test bakes: four tables in every format with error maps
+// (E, Eavg, Favg, dfg as .exr, .bin, .h and .err.exr, and kulla_conty.h).
+std::vector<std::string> SmallSet(const fs::path &out, int seed, int size = 16) {
+  return {"bake",
+          "--out",
+          out.string(),
+          "--tables",
+          "E,Eavg,Favg,dfg",
+          "--size",
+          std::to_string(size),
+          "--samples",
+          "16",
+          "--seed",
+          std::to_string(seed),
+          "--format",
+          "exr,bin,header",
+          "--error-map",
+          "--threads",
+          "1"};
+}
+constexpr size_t kSmallSetFiles = 4 * 4 + 1;
+
+// A bake that runs about a second (dfg 512 x 512 by the quadrature on one
+// thread), to signal or disturb while it runs.
+std::vector<std::string> LongBake(const fs::path &out) {
+  return {"bake", "--out",     out.string(), "--tables", "dfg",           "--size",
+          "512",  "--threads", "1",          "--format", "exr,bin,header"};
+}
+
+// The commandLine a final file records (the run it belongs to), after
+// reading it whole with the library's reader for its format; throws IoError
+// on a file that does not parse.
+std::string RunOf(const fs::path &file) {
+  const std::string path = file.string(), name = file.filename().string();
+  const auto find = [&](const std::vector<std::pair<std::string, std::string>> &metadata) {
+    for (const auto &[key, value] : metadata)
+      if (key == "commandLine") return value;
+    throw lutbake::IoError(path + ": no commandLine");
+  };
+  if (name.size() > 4 && name.substr(name.size() - 4) == ".exr")
+    return find(lutbake::ReadExrTable(path).metadata);
+  if (name.size() > 4 && name.substr(name.size() - 4) == ".bin")
+    return find(lutbake::ReadBinaryTable(path).metadata);
+  if (name.rfind("kulla_conty", 0) == 0) {
+    // Functions, no table: its comment and its closing line.
+    const std::string text = ReadAll(file);
+    if (text.find("#endif") == std::string::npos &&
+        text.find("}  // namespace") == std::string::npos)
+      throw lutbake::IoError(path + ": truncated");
+    const std::string key = "//   commandLine: ";
+    const size_t at = text.find(key);
+    if (at == std::string::npos) throw lutbake::IoError(path + ": no commandLine");
+    return text.substr(at + key.size(), text.find('\n', at) - at - key.size());
+  }
+  return find(lutbake::ReadHeaderValues(path).metadata);
+}
+
+// Every file under a final name parses, and all record the same run; the
+// number of final files (temporaries are counted in *temporaries).
+size_t ExpectOneRun(const fs::path &dir, const std::string &context, size_t *temporaries) {
+  std::string run;
+  size_t finals = 0;
+  *temporaries = 0;
+  for (const auto &entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (lutbake::IsTemporaryName(name)) {
+      ++*temporaries;
+      continue;
+    }
+    ++finals;
+    try {
+      const std::string of = RunOf(entry.path());
+      if (run.empty()) run = of;
+      EXPECT_EQ(of, run) << context << ": " << name << " belongs to another run";
+    } catch (const std::exception &e) {
+      ADD_FAILURE() << context << ": " << name << " does not parse: " << e.what();
+    }
+  }
+  return finals;
+}
+
+void ExpectNoTemporary(const fs::path &dir, const std::string &context) {
+  for (const auto &[name, content] : Contents(dir))
+    EXPECT_FALSE(lutbake::IsTemporaryName(name) || name.find(".tmp") != std::string::npos)
+        << context << ": temporary left: " << name;
+}
+
+TEST(Reliability, FiftyFiveKillsNeverLeaveATornOrMixedSet) {
+  const fs::path out = lutbake::test::Scratch("kills");
+  const fs::path log = out.string() + ".log";
+  // An uninterrupted run: its duration spreads the kills, and its files
+  // are the first "previous set".
+  auto start = Clock::now();
+  ASSERT_EQ(WaitFor(Spawn(SmallSet(out, 0), log), std::chrono::seconds(60)), 0) << ReadAll(log);
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  size_t temporaries = 0;
+  ASSERT_EQ(ExpectOneRun(out, "first run", &temporaries), kSmallSetFiles);
+  std::mt19937 random(18);
+  std::uniform_real_distribution<double> moment(0.0, 1.1 * seconds);
+  std::map<std::string, int> seen;  // what the kills left
+  for (int kill = 1; kill <= 55; ++kill) {
+    const pid_t pid = Spawn(SmallSet(out, kill), log);
+    std::this_thread::sleep_for(std::chrono::duration<double>(moment(random)));
+    ::kill(pid, SIGKILL);
+    const int status = WaitFor(pid, std::chrono::seconds(60));
+    const std::string context = "kill " + std::to_string(kill);
+    const size_t finals = ExpectOneRun(out, context, &temporaries);
+    ++seen[std::string(WIFSIGNALED(status) ? "killed" : "finished") +
+           (finals == kSmallSetFiles ? ", whole set" : ", part of a set") +
+           (temporaries > 0 ? ", temporaries" : "")];
+    if (::testing::Test::HasFailure()) break;
+  }
+  // The next run in the same directory: succeeds, one whole set, nothing else.
+  ASSERT_EQ(WaitFor(Spawn(SmallSet(out, 99), log), std::chrono::seconds(60)), 0) << ReadAll(log);
+  EXPECT_EQ(ExpectOneRun(out, "after the kills", &temporaries), kSmallSetFiles);
+  EXPECT_EQ(temporaries, 0u);
+  EXPECT_NE(RunOf(out / "E.exr").find("--seed 99"), std::string::npos);
+  std::string summary;
+  for (const auto &[what, count] : seen)
+    summary += "  " + what + ": " + std::to_string(count) + "\n";
+  std::printf("one bake %.3f s; 55 kills left:\n%s", seconds, summary.c_str());
+  fs::remove_all(out);
+  fs::remove(log);
+}
+
+// SIGINT into a new directory, SIGTERM over a previous set: exit 128 + the
+// signal within a second, one line naming it, the directory as before.
+TEST(Reliability, SigintAndSigtermEndPromptlyAndLeaveNothing) {
+  for (const int signal : {SIGINT, SIGTERM}) {
+    const std::string name = signal == SIGINT ? "SIGINT" : "SIGTERM";
+    const fs::path out = lutbake::test::Scratch("signal_" + name);
+    const fs::path log = out.string() + ".log";
+    std::map<std::string, std::string> before;
+    if (signal == SIGTERM) {
+      ASSERT_EQ(WaitFor(Spawn(SmallSet(out, 1), log), std::chrono::seconds(60)), 0);
+      before = Contents(out);
+    }
+    const pid_t pid = Spawn(LongBake(out), log);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    ::kill(pid, signal);
+    const auto sent = Clock::now();
+    const int status = WaitFor(pid, std::chrono::seconds(30));
+    const double latency = std::chrono::duration<double>(Clock::now() - sent).count();
+    ASSERT_TRUE(status != -1 && WIFEXITED(status)) << name << ": " << ReadAll(log);
+    EXPECT_EQ(WEXITSTATUS(status), 128 + signal) << name << ": " << ReadAll(log);
+    EXPECT_LT(latency, 1.0) << name;
+    const std::vector<std::string> lines = Lines(ReadAll(log));
+    ASSERT_EQ(lines.size(), 1u) << ReadAll(log);
+    EXPECT_EQ(lines[0],
+              "lutbake bake: interrupted by " + name + "; nothing written to " + out.string());
+    if (signal == SIGINT) {
+      EXPECT_FALSE(fs::exists(out)) << "the directory the run created is left";
+    } else {
+      EXPECT_EQ(Contents(out), before) << "the previous set changed";
+    }
+    fs::remove_all(out);
+    fs::remove(log);
+  }
+}
+
+// A file size limit that the first files fit and a later one does not:
+// exit 1, the file and the reason, the previous set untouched.
+TEST(Reliability, FileSizeLimitFailsWithTheFileAndReasonAndKeepsThePreviousSet) {
+  const fs::path out = lutbake::test::Scratch("fsize");
+  const fs::path log = out.string() + ".log";
+  ASSERT_EQ(WaitFor(Spawn(SmallSet(out, 1), log), std::chrono::seconds(60)), 0);
+  const auto before = Contents(out);
+  // At size 64: E.exr (16.5 KiB, the first file written) fits in 24 KiB,
+  // E.bin (33 KiB) does not. SIGXFSZ is at its default: lutbake must ignore
+  // it itself.
+  SpawnOptions limited;
+  limited.fileSizeLimit = 24 * 1024;
+  const int status = WaitFor(Spawn(SmallSet(out, 2, 64), log, limited), std::chrono::seconds(60));
+  const std::string output = ReadAll(log);
+  ASSERT_TRUE(status != -1 && WIFEXITED(status)) << "killed by signal: " << output;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << output;
+  EXPECT_NE(
+      output.find("lutbake bake: cannot write " + (out / "E.bin").string() + ": File too large"),
+      std::string::npos)
+      << output;
+  EXPECT_EQ(Contents(out), before) << "the previous set changed";
+  ExpectNoTemporary(out, "file size limit");
+  fs::remove_all(out);
+  fs::remove(log);
+}
+
+// A full file system (a 256 KiB tmpfs; mounting needs CAP_SYS_ADMIN).
+TEST(Reliability, FullDiskFailsWithTheFileAndReasonAndKeepsThePreviousSet) {
+  const fs::path out = lutbake::test::Scratch("tmpfs");
+  const fs::path log = out.string() + ".log";
+  fs::create_directories(out);
+  if (::mount("tmpfs", out.c_str(), "tmpfs", 0, "size=256k") != 0) {
+    const std::string reason = std::strerror(errno);
+    fs::remove_all(out);
+    GTEST_SKIP() << "cannot mount a tmpfs (" << reason
+                 << "); the file size limit test covers write errors";
+  }
+  ASSERT_EQ(WaitFor(Spawn(SmallSet(out, 1), log), std::chrono::seconds(60)), 0) << ReadAll(log);
+  const auto before = Contents(out);
+  const int status = WaitFor(Spawn(SmallSet(out, 2, 128), log), std::chrono::seconds(60));
+  const std::string output = ReadAll(log);
+  EXPECT_TRUE(status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 1) << output;
+  EXPECT_NE(output.find("lutbake bake: cannot write " + out.string() + "/"), std::string::npos)
+      << output;
+  EXPECT_NE(output.find(": No space left on device"), std::string::npos) << output;
+  EXPECT_EQ(Contents(out), before) << "the previous set changed";
+  ExpectNoTemporary(out, "full disk");
+  ::umount(out.c_str());
+  fs::remove_all(out);
+  fs::remove(log);
+}
+
+// The output directory made read-only (0555) while the bake runs. Root
+// ignores permissions, so as root the bake runs as nobody (65534).
+TEST(Reliability, DirectoryMadeReadOnlyDuringTheRunFailsAndLeavesNothing) {
+  const fs::path out = lutbake::test::Scratch("readonly");
+  const fs::path log = out.string() + ".log";
+  SpawnOptions options;
+  options.asNobody = ::geteuid() == 0;
+  fs::create_directories(out);
+  if (options.asNobody) {
+    if (::chown(out.c_str(), 65534, 65534) != 0 || ::access(LUTBAKE_BINARY, X_OK) != 0)
+      GTEST_SKIP() << "cannot hand the directory to nobody";
+  }
+  const pid_t pid = Spawn(LongBake(out), log, options);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ASSERT_EQ(::chmod(out.c_str(), 0555), 0);
+  const int status = WaitFor(pid, std::chrono::seconds(60));
+  const std::string output = ReadAll(log);
+  EXPECT_TRUE(status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 1) << output;
+  EXPECT_NE(output.find("lutbake bake: cannot write " + (out / "dfg.exr").string() +
+                        ": Permission denied"),
+            std::string::npos)
+      << output;
+  EXPECT_TRUE(Contents(out).empty()) << "files left in the read-only directory";
+  fs::remove_all(out);
+  fs::remove(log);
+}
+
+}  // namespace
