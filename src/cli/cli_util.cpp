@@ -1,5 +1,7 @@
 #include "cli_util.h"
 
+#include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -110,17 +112,32 @@ std::string PrepareOutputDirectory(const std::string &dir, bool *created, bool *
     *created = fs::create_directories(dir, ec);
     if (ec) return "cannot create the directory: " + ec.message();
   }
-  // Probe by writing, which also catches read-only file systems.
-  const std::string probe =
-      (fs::path(dir) / (".lutbake-probe-" + std::to_string(::getpid()))).string();
-  std::FILE *f = std::fopen(probe.c_str(), "wb");
-  if (!f) {
+  // Probe by creating a file, which also catches read-only file systems.
+  // An anonymous one (O_TMPFILE) where the file system has them: the kernel
+  // frees it however the process ends, so a kill never leaves a probe
+  // behind. Elsewhere a named probe, removed at once; a probe left by a
+  // killed run (its pid no longer exists) is removed here.
+  int fd = ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
+  if (fd < 0 && (errno == EOPNOTSUPP || errno == EISDIR || errno == EINVAL)) {
+    for (const auto &entry : fs::directory_iterator(dir, ec)) {
+      const std::string file = entry.path().filename().string();
+      const std::string prefix = ".lutbake-probe-";
+      if (file.rfind(prefix, 0) != 0) continue;
+      const long pid = std::strtol(file.c_str() + prefix.size(), nullptr, 10);
+      if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+        fs::remove(entry.path(), ec);
+    }
+    const std::string probe =
+        (fs::path(dir) / (".lutbake-probe-" + std::to_string(::getpid()))).string();
+    fd = ::open(probe.c_str(), O_CREAT | O_WRONLY | O_CLOEXEC, 0600);
+    if (fd >= 0) ::unlink(probe.c_str());
+  }
+  if (fd < 0) {
     const std::string reason = std::strerror(errno);
     if (*created) fs::remove(dir, ec);
     return "is not writable: " + reason;
   }
-  std::fclose(f);
-  std::remove(probe.c_str());
+  ::close(fd);
   return {};
 }
 
