@@ -121,7 +121,9 @@ std::string FurnaceJson(const FurnaceSettings &s, const FurnaceResult &r) {
                                              {"value", r.average[p].value},
                                              {"error", r.average[p].error}});
   j["average"] = average;
+  // No gain (or loss) at all: null, not a point of the grid.
   const auto extreme = [](const FurnaceExtreme &x) {
+    if (!(x.amount > 0.0)) return nlohmann::ordered_json(nullptr);
     return nlohmann::ordered_json{
         {"amount", x.amount}, {"error", x.error}, {"parameter", x.parameter}, {"mu", x.mu}};
   };

@@ -31,6 +31,8 @@ TEST(FurnaceCli, JsonHoldsTheClosedForms) {
   // The worst loss is the largest 1 - albedo: n = 3 gives 1/5.
   EXPECT_NEAR(j["worst"]["loss"]["amount"].get<double>(), 0.2, 1e-9);
   EXPECT_EQ(j["worst"]["loss"]["parameter"].get<double>(), 3.0);
+  // Normalised Phong at n = 3 never reflects more than it receives.
+  EXPECT_TRUE(j["worst"]["gain"].is_null()) << j["worst"].dump();
 }
 
 TEST(FurnaceCli, RefusesBadInput) {
