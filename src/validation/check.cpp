@@ -42,6 +42,20 @@ std::string Short(double v) {
   return buffer;
 }
 
+// The largest deviation of a claim over its points, and the point that
+// exceeds its allowance the most (excess > 0: the claim fails there).
+struct Worst {
+  using Place = std::vector<std::pair<std::string, double>>;
+  double deviation = 0.0, excess = -1.0, excessDeviation = 0.0, excessAllowed = 0.0;
+  Place at, atExcess;
+  void Note(double dev, double allowed, const Place &where) {
+    if (dev > deviation || at.empty()) deviation = dev, at = where;
+    if (dev - allowed > excess)
+      excess = dev - allowed, excessDeviation = dev, excessAllowed = allowed, atExcess = where;
+  }
+  bool failed() const { return excess > 0.0; }
+};
+
 // A table as read from DIR, with everything the checks need.
 struct Loaded {
   const TableDefinition *def = nullptr;
@@ -775,8 +789,7 @@ class Checker {
               " = " + Short(closed->at));
       return;
     }
-    double worst = 0.0, worstExcess = -1.0, excessValue = 0.0, excessAllowed = 0.0;
-    std::vector<std::pair<std::string, double>> at, atExcess;
+    Worst worst;
     int texels = 0;
     const int height = closed->axis == 1 ? 1 : table.height();
     for (int y = 0; y < height; ++y)
@@ -794,21 +807,20 @@ class Checker {
         const auto where =
             At(table, table.x.TexelCenter(x), table.y.TexelCenter(iy), table.z.TexelCenter(iz));
         ++texels;
-        if (dev > worst || at.empty()) worst = dev, at = where;
-        if (dev - allowed > worstExcess)
-          worstExcess = dev - allowed, excessValue = dev, excessAllowed = allowed, atExcess = where;
+        worst.Note(dev, allowed, where);
       }
-    if (worstExcess > 0.0)
+    if (worst.failed())
       Add(name, "slice", CheckStatus::kFail,
-          closed->subject + " departs from " + closed->formula + " by " + Short(excessValue) +
-              " at " + Where(atExcess) + ", more than the texel's bound " + Short(excessAllowed),
-          excessValue, excessAllowed, atExcess);
+          closed->subject + " departs from " + closed->formula + " by " +
+              Short(worst.excessDeviation) + " at " + Where(worst.atExcess) +
+              ", more than the texel's bound " + Short(worst.excessAllowed),
+          worst.excessDeviation, worst.excessAllowed, worst.atExcess);
     else
       Add(name, "slice", CheckStatus::kPass,
           closed->subject + " = " + closed->formula + " at all " + std::to_string(texels) +
               " texels of the slice, within their bounds: max |table - closed form| " +
-              Short(worst) + " at " + Where(at),
-          worst, 0.0, at);
+              Short(worst.deviation) + " at " + Where(worst.at),
+          worst.deviation, 0.0, worst.at);
   }
 
   // The limits the definition's integrator reaches where the table has no
@@ -847,18 +859,14 @@ class Checker {
         for (int n = 0, m = 0; n < 3; ++n) p[n] = n == claim.axis ? claim.near : c[m++];
         it.v = t.def->Evaluate3D(s, p[0], p[1], p[2]);
       });
-      double worst = 0.0, worstExcess = -1.0, excessValue = 0.0, excessAllowed = 0.0;
-      std::vector<std::pair<std::string, double>> at, atExcess;
+      Worst worst;
       for (const Item &it : items) {
         const double exact = claim.value(it.a, it.b);
         const double dev = std::abs(it.v.value[0] - exact);
         const double allowed = it.v.error[0] + claim.slack;
         double p[3], c[2] = {it.a, it.b};
         for (int n = 0, m = 0; n < 3; ++n) p[n] = n == claim.axis ? claim.near : c[m++];
-        const auto where = At(table, p[0], p[1], p[2]);
-        if (dev > worst || at.empty()) worst = dev, at = where;
-        if (dev - allowed > worstExcess)
-          worstExcess = dev - allowed, excessValue = dev, excessAllowed = allowed, atExcess = where;
+        worst.Note(dev, allowed, At(table, p[0], p[1], p[2]));
       }
       const std::string detail =
           "the integrator at " +
@@ -870,16 +878,16 @@ class Checker {
           " texel centres of the other axes" +
           (left ? " (" + std::to_string(left) + " beside a branch point left out)"
                 : std::string()) +
-          ": max |value - limit| " + Short(worst) + " at " + Where(at) + "; allowed its bound + " +
-          claim.slackText;
-      if (worstExcess > 0.0)
+          ": max |value - limit| " + Short(worst.deviation) + " at " + Where(worst.at) +
+          "; allowed its bound + " + claim.slackText;
+      if (worst.failed())
         Add(Name(*t.def), "limit", CheckStatus::kFail,
             claim.subject + " is " + claim.formula + ", but " + detail + "; off by " +
-                Short(excessValue) + " at " + Where(atExcess),
-            excessValue, excessAllowed, atExcess);
+                Short(worst.excessDeviation) + " at " + Where(worst.atExcess),
+            worst.excessDeviation, worst.excessAllowed, worst.atExcess);
       else
         Add(Name(*t.def), "limit", CheckStatus::kPass,
-            claim.subject + " = " + claim.formula + ": " + detail, worst, 0.0, at);
+            claim.subject + " = " + claim.formula + ": " + detail, worst.deviation, 0.0, worst.at);
     }
   }
 
@@ -905,8 +913,7 @@ class Checker {
     const auto rounding = [&](const Loaded &t, double v) {
       return t.boundsCoverStorage ? 0.0 : FloatRounding(v);
     };
-    double worst = 0.0, worstExcess = -1.0, excessValue = 0.0, excessAllowed = 0.0;
-    std::vector<std::pair<std::string, double>> at, atExcess;
+    Worst worst;
     int pairs = 0;
     for (int j = 0; j < tg.height(); ++j) {
       const double eta = tg.y.TexelCenter(j);
@@ -925,11 +932,8 @@ class Checker {
             eta * eta *
                 (std::max(g.statedErrorMax, g.Bound(b)) +
                  std::max(sp->statedErrorMax, sp->Bound(b)) + rounding(g, gB) + rounding(*sp, sB));
-        const auto where = At(tg, tg.x.TexelCenter(x), eta);
         ++pairs;
-        if (dev > worst || at.empty()) worst = dev, at = where;
-        if (dev - allowed > worstExcess)
-          worstExcess = dev - allowed, excessValue = dev, excessAllowed = allowed, atExcess = where;
+        worst.Note(dev, allowed, At(tg, tg.x.TexelCenter(x), eta));
       }
     }
     const std::string claim =
@@ -937,17 +941,18 @@ class Checker {
     if (pairs == 0)
       Add(subject, "reciprocity", CheckStatus::kSkipped,
           claim + ": the eta axis holds no pair eta, 1/eta");
-    else if (worstExcess > 0.0)
+    else if (worst.failed())
       Add(subject, "reciprocity", CheckStatus::kFail,
-          claim + ", but it is off by " + Short(excessValue) + " at " + Where(atExcess) +
-              ", more than the " + Short(excessAllowed) + " the four texels' bounds allow",
-          excessValue, excessAllowed, atExcess);
+          claim + ", but it is off by " + Short(worst.excessDeviation) + " at " +
+              Where(worst.atExcess) + ", more than the " + Short(worst.excessAllowed) +
+              " the four texels' bounds allow",
+          worst.excessDeviation, worst.excessAllowed, worst.atExcess);
     else
       Add(subject, "reciprocity", CheckStatus::kPass,
           claim + " at " + std::to_string(pairs) +
               " texel pairs, within the four texels' bounds: max |T(eta) - eta^2 T(1/eta)| " +
-              Short(worst) + " at " + Where(at),
-          worst, 0.0, at);
+              Short(worst.deviation) + " at " + Where(worst.at),
+          worst.deviation, 0.0, worst.at);
   }
 
   // The usable table of this set whose definition is called `name`.

@@ -18,6 +18,7 @@
 #include "lutbake/integrators/gauss_legendre.h"
 #include "lutbake/tables/bake.h"
 #include "lutbake/tables/lookup.h"
+#include "support/check_json.h"
 #include "support/cli_run.h"
 
 namespace lutbake {
@@ -254,10 +255,7 @@ TEST(F82Table, BakeEvalAndCheckThroughTheCommandLine) {
   EXPECT_EQ(Lutbake("eval --table f82 --mu 0.5 --roughness 0.5 --eta 1.5").status, 2);
   const test::CommandResult check = Lutbake("check " + out.string() + " --json", true);
   EXPECT_EQ(check.status, 0) << check.output;
-  const nlohmann::json report = nlohmann::json::parse(check.output);
-  std::map<std::string, std::string> status;
-  for (const auto &r : report["checks"])
-    status[std::string(r["subject"]) + " " + std::string(r["check"])] = r["status"];
+  std::map<std::string, std::string> status = test::CheckStatuses(check.output);
   for (const char *expected : {"f82 range", "f82 texels", "f82 points", "f82+dfg at most"})
     EXPECT_EQ(status[expected], "pass") << expected << "\n" << check.output;
   fs::remove_all(out);
@@ -384,10 +382,7 @@ TEST(F82Table, ManifestMetalsArePlannedBakedAndChecked) {
           static_cast<float>(F82TintFresnelAverage(favg.x.nodes[x], favg.y.TexelCenter(y)).value));
   const test::CommandResult check = Lutbake("check " + out.string() + " --json", true);
   EXPECT_EQ(check.status, 0) << check.output;
-  const nlohmann::json report = nlohmann::json::parse(check.output);
-  std::map<std::string, std::string> status;
-  for (const auto &r : report["checks"])
-    status[std::string(r["subject"]) + " " + std::string(r["check"])] = r["status"];
+  std::map<std::string, std::string> status = test::CheckStatuses(check.output);
   for (const char *expected : {"f82 texels", "f82+dfg at most", "Favg_f82 closed form"})
     EXPECT_EQ(status[expected], "pass") << expected << "\n" << check.output;
   fs::remove_all(out);

@@ -18,6 +18,7 @@
 #include "lutbake/formats/table_reader.h"
 #include "lutbake/tables/bake.h"
 #include "lutbake/tables/lookup.h"
+#include "support/check_json.h"
 #include "support/cli_run.h"
 #include "support/csv.h"
 
@@ -234,10 +235,7 @@ TEST(SheenTables, DefaultBakePassesCheck) {
   }
   const test::CommandResult check = Lutbake("check " + out.string() + " --json", true);
   EXPECT_EQ(check.status, 0) << check.output;
-  const nlohmann::json report = nlohmann::json::parse(check.output);
-  std::map<std::string, std::string> status;
-  for (const auto &r : report["checks"])
-    status[std::string(r["subject"]) + " " + std::string(r["check"])] = r["status"];
+  std::map<std::string, std::string> status = test::CheckStatuses(check.output);
   for (const char *expected :
        {"sheen_E range", "sheen_E texels", "sheen_E points", "sheen_E furnace", "sheen_Eavg range",
         "sheen_Eavg texels", "sheen_E+sheen_Eavg average"})
