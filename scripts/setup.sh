@@ -10,6 +10,9 @@ $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   g++ clang cmake make ninja-build pkg-config \
   libopenexr-dev libimath-dev libopenimageio-dev openimageio-tools \
-  libtbb-dev libhwy-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev >/dev/null
+  libtbb-dev libhwy-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev \
+  nodejs npm >/dev/null
+# nodejs and npm: the KTX2 test parses lutbake's .ktx2 files with the npm
+# package ktx-parse, which it installs under build/npm on first use.
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"

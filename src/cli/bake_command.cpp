@@ -77,9 +77,15 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
                "Also write T.err.exr: the per-texel bound of T.exr's float32 values (their "
                "rounding included), same layout and channels as T");
   AddThreadsOption(app, o.threads, "; output does not depend on it");
-  app.add_option("--format", o.formats, "Files to write per table: T.exr, T.bin, T.h")
+  app.add_option("--format", o.formats,
+                 "Files to write per table: exr (T.exr), bin (T.bin), header (T.h), png8 / png16 "
+                 "(T.png, 8 or 16 bits rounded to nearest: adds at most half a step, 1/510 or "
+                 "1/131070; values must lie in [0, 1]), ktx2 / ktx2-half (T.ktx2, float32 or "
+                 "binary16), dds / dds-half (T.dds with the DX10 header, float32 or binary16); "
+                 "every file's errorMax covers its own storage")
       ->capture_default_str()
-      ->check(ListOf({"exr", "bin", "header"}));
+      ->check(ListOf(
+          {"exr", "bin", "header", "png8", "png16", "ktx2", "ktx2-half", "dds", "dds-half"}));
   app.add_option("--namespace", o.headerNamespace, "Namespace of the generated C++ headers")
       ->capture_default_str()
       ->check(CppNamespace());
@@ -256,7 +262,17 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
       return 2;
     }
   std::vector<std::unique_ptr<TableWriter>> writers;
-  for (const std::string &name : SplitList(o.formats)) writers.push_back(MakeWriter(name));
+  for (const std::string &name : SplitList(o.formats)) {
+    writers.push_back(MakeWriter(name));
+    // png8 and png16 both write T.png, ktx2 and ktx2-half T.ktx2, ...
+    for (size_t i = 0; i + 1 < writers.size(); ++i)
+      if (std::string(writers[i]->extension()) == writers.back()->extension()) {
+        std::cerr << "lutbake bake: --format " << o.formats << ": " << writers[i]->formatName()
+                  << " and " << name << " both write T" << writers.back()->extension()
+                  << "; choose one\n";
+        return 2;
+      }
+  }
 
   bool created = false;
   if (const int status = PrepareOutputOrComplain("bake", o.outDir, &created)) return status;

@@ -18,6 +18,44 @@
 
 namespace lutbake {
 
+void ShapeFromMetadata(const std::string &path, long width, long height, Table *tablePtr) {
+  Table &table = *tablePtr;
+  const std::string *axisX = table.FindMetadata("axisX");
+  const std::string *axisY = table.FindMetadata("axisY");
+  if (!axisX || !ParseAxisDescription(*axisX, &table.x))
+    throw IoError(path +
+                  ": attribute axisX missing or not of the form "
+                  "'name linear [min, max], N texels'");
+  const bool axisYParsed = axisY && ParseAxisDescription(*axisY, &table.y);
+  if (!axisYParsed && height == 1) {
+    table.y = LinearAxis("", 0.0, 1.0, 1);  // a 1D table: axisY reads "none (1D table)"
+  } else if (!axisYParsed) {
+    throw IoError(path + ": attribute axisY missing or malformed for a 2D image");
+  }
+  // A 3D table: axisZ names the third axis, whose slices are stacked
+  // along the image's y.
+  if (const std::string *axisZ = table.FindMetadata("axisZ")) {
+    if (!ParseAxisDescription(*axisZ, &table.z) || table.z.name.empty())
+      throw IoError(path + ": attribute axisZ malformed");
+    if (!axisYParsed) throw IoError(path + ": attribute axisZ without axisY");
+  }
+  if (table.x.count != width || static_cast<long>(table.y.count) * table.z.count != height)
+    throw IoError(path + ": image is " + std::to_string(width) + " x " + std::to_string(height) +
+                  " but the axes say " + std::to_string(table.x.count) + " x " +
+                  std::to_string(table.y.count) +
+                  (table.is3D() ? " x " + std::to_string(table.z.count) : std::string()));
+  // "T", or "T.err" for an error map (ErrorMapOf).
+  const std::string *name = table.FindMetadata("table");
+  if (name) {
+    const std::string plain = name->size() > 4 && name->compare(name->size() - 4, 4, ".err") == 0
+                                  ? name->substr(0, name->size() - 4)
+                                  : *name;
+    table.definition = FindTable(plain);
+  }
+  if (!table.definition)
+    throw IoError(path + ": attribute 'table' missing or not one of " + TableNameList());
+}
+
 Table ReadExrTable(const std::string &path) {
   Table table;
   try {
@@ -43,40 +81,7 @@ Table ReadExrTable(const std::string &path) {
     else
       throw IoError(path + ": no Y channel and no R, G channels");
     table.channels = static_cast<int>(table.channelNames.size());
-    const std::string *axisX = table.FindMetadata("axisX");
-    const std::string *axisY = table.FindMetadata("axisY");
-    if (!axisX || !ParseAxisDescription(*axisX, &table.x))
-      throw IoError(path +
-                    ": attribute axisX missing or not of the form "
-                    "'name linear [min, max], N texels'");
-    const bool axisYParsed = axisY && ParseAxisDescription(*axisY, &table.y);
-    if (!axisYParsed && height == 1) {
-      table.y = LinearAxis("", 0.0, 1.0, 1);  // a 1D table: axisY reads "none (1D table)"
-    } else if (!axisYParsed) {
-      throw IoError(path + ": attribute axisY missing or malformed for a 2D image");
-    }
-    // A 3D table: axisZ names the third axis, whose slices are stacked
-    // along the image's y.
-    if (const std::string *axisZ = table.FindMetadata("axisZ")) {
-      if (!ParseAxisDescription(*axisZ, &table.z) || table.z.name.empty())
-        throw IoError(path + ": attribute axisZ malformed");
-      if (!axisYParsed) throw IoError(path + ": attribute axisZ without axisY");
-    }
-    if (table.x.count != width || static_cast<long>(table.y.count) * table.z.count != height)
-      throw IoError(path + ": image is " + std::to_string(width) + " x " + std::to_string(height) +
-                    " but the axes say " + std::to_string(table.x.count) + " x " +
-                    std::to_string(table.y.count) +
-                    (table.is3D() ? " x " + std::to_string(table.z.count) : std::string()));
-    // "T", or "T.err" for an error map (ErrorMapOf).
-    const std::string *name = table.FindMetadata("table");
-    if (name) {
-      const std::string plain = name->size() > 4 && name->compare(name->size() - 4, 4, ".err") == 0
-                                    ? name->substr(0, name->size() - 4)
-                                    : *name;
-      table.definition = FindTable(plain);
-    }
-    if (!table.definition)
-      throw IoError(path + ": attribute 'table' missing or not one of " + TableNameList());
+    ShapeFromMetadata(path, width, height, &table);
     std::vector<float> pixels(static_cast<size_t>(width) * height * table.channels);
     Imf::FrameBuffer frame;
     const size_t xStride = sizeof(float) * table.channels;

@@ -12,6 +12,8 @@ const char *ToString(ValueType type) {
     case ValueType::kFloat32: return "float32";
     case ValueType::kFloat64: return "float64";
     case ValueType::kHalf: return "half";
+    case ValueType::kUnorm8: return "unorm8";
+    case ValueType::kUnorm16: return "unorm16";
   }
   return "?";
 }
@@ -22,8 +24,18 @@ double StoredValue(double value, ValueType type) {
     case ValueType::kFloat64: return value;
     case ValueType::kHalf:
       return static_cast<double>(static_cast<float>(Imath::half(static_cast<float>(value))));
+    case ValueType::kUnorm8: return QuantizeUnorm(value, 8) / 255.0;
+    case ValueType::kUnorm16: return QuantizeUnorm(value, 16) / 65535.0;
   }
   return value;
+}
+
+unsigned QuantizeUnorm(double value, int bits) {
+  const double top = static_cast<double>((1u << bits) - 1u);
+  // !(value > 0) also sends NaN to 0; the writers refuse NaN before this.
+  if (!(value > 0.0)) return 0;
+  if (value >= 1.0) return static_cast<unsigned>(top);
+  return static_cast<unsigned>(std::floor(value * top + 0.5));
 }
 
 double RoundUpToFloat(double bound) {

@@ -134,7 +134,8 @@ class Checker {
     for (size_t i = 0; i < AllTables().size(); ++i) Load(i);
     if (tables_.empty()) {
       Add(dir_, "tables", CheckStatus::kFail,
-          "no table files (" + TableNameList() + " as .exr, .bin or .h) found in " + dir_);
+          "no table files (" + TableNameList() +
+              " as .exr, .bin, .h, .ktx2, .dds or .png) found in " + dir_);
     } else {
       ComputeReferences();
       for (auto &[index, t] : tables_) {
@@ -190,7 +191,9 @@ class Checker {
     const fs::path base = fs::path(dir_) / name;
     const std::string exrPath = base.string() + ".exr", binPath = base.string() + ".bin",
                       hPath = base.string() + ".h", errPath = base.string() + ".err.exr";
-    std::optional<Table> exr, bin, err;
+    const std::string pngPath = base.string() + ".png", ktx2Path = base.string() + ".ktx2",
+                      ddsPath = base.string() + ".dds";
+    std::optional<Table> exr, bin, err, png, ktx2, dds;
     std::optional<HeaderValues> header;
     std::vector<std::string> problems;
     const auto attempt = [&](const std::string &path, auto read) {
@@ -215,7 +218,10 @@ class Checker {
     attempt(binPath, [&] { bin = ReadBinaryTable(binPath); });
     attempt(hPath, [&] { header = ReadHeaderValues(hPath); });
     attempt(errPath, [&] { err = ReadExrTable(errPath); });
-    const bool present = exr || bin || header || !problems.empty();
+    attempt(ktx2Path, [&] { ktx2 = ReadKtx2Table(ktx2Path); });
+    attempt(ddsPath, [&] { dds = ReadDdsTable(ddsPath); });
+    attempt(pngPath, [&] { png = ReadPngTable(pngPath); });
+    const bool present = exr || bin || header || ktx2 || dds || png || !problems.empty();
     if (!present) return;
     Loaded &t = tables_[index];
     t.def = &def;
@@ -247,6 +253,24 @@ class Checker {
             hPath + ": its comment lacks axisX / axisY matching kWidth and kHeight");
         return;
       }
+    } else if (ktx2 || dds || png) {
+      // The GPU texture files, the most precise first; their metadata
+      // (errorStorage) makes errorMax cover their own storage.
+      const auto storage = [](const std::optional<Table> &f) {
+        return f ? *f->FindMetadata("errorStorage") : std::string();  // the readers require it
+      };
+      const bool ktx2Float = storage(ktx2) == "float32", ddsFloat = storage(dds) == "float32";
+      const bool useKtx2 = ktx2 && (ktx2Float || !ddsFloat), useDds = !useKtx2 && dds;
+      t.table = useKtx2 ? *ktx2 : useDds ? *dds : *png;
+      t.primary = useKtx2 ? ktx2Path : useDds ? ddsPath : pngPath;
+      // What the storage may move a value in [0, 1] (the range check's
+      // slack for sums; errorMax covers it already): half an ulp of half at
+      // [0.5, 1), 2^-12, or half a b-bit step.
+      const std::string kind = storage(useKtx2 ? ktx2 : useDds ? dds : png);
+      t.storageError = kind == "half"      ? 0x1p-12
+                       : kind == "unorm8"  ? 0.5 / 255.0
+                       : kind == "unorm16" ? 0.5 / 65535.0
+                                           : 0.0;
     } else {
       return;  // nothing readable; the reasons are reported above
     }
@@ -282,6 +306,7 @@ class Checker {
       t.table.errors.assign(t.table.values.size(), t.statedErrorMax);
     }
     CheckFormats(t, exr, bin, header, err);
+    CheckTextureFormats(t, {{ktx2Path, ktx2}, {ddsPath, dds}, {pngPath, png}});
     t.usable = true;
   }
 
@@ -408,6 +433,72 @@ class Checker {
       for (size_t i = 0; i < compared.size(); ++i) list += (i ? ", " : "") + compared[i];
       Add(name, "formats", CheckStatus::kPass,
           list + " hold the same float32 values as " + t.primary);
+    }
+  }
+
+  // The KTX2, DDS and PNG files, each against the primary when it is not
+  // the primary itself: the same axes, and the same values as the coarser
+  // of the two storages holds them: float32 or half bit for bit (a half
+  // primary, ktx2-half or dds-half alone with float files, against the
+  // float values rounded to half); a b-bit PNG within half a step
+  // 0.5 / (2^b - 1) plus the primary's own rounding (half an ulp: 2^-24 |p|
+  // for float32, 2^-11 |p| for half), which the PNG did not see: it was
+  // quantised from the double.
+  void CheckTextureFormats(const Loaded &t,
+                           const std::vector<std::pair<std::string, std::optional<Table>>> &files) {
+    const std::string name = Name(*t.def);
+    std::vector<std::string> compared, problems;
+    for (const auto &[path, file] : files) {
+      if (!file || path == t.primary) continue;
+      const std::string what = fs::path(path).filename().string();
+      if (DescribeAxis(file->x) != DescribeAxis(t.table.x) ||
+          DescribeAxis(file->y) != DescribeAxis(t.table.y) ||
+          DescribeAxis(file->z) != DescribeAxis(t.table.z)) {
+        problems.push_back(what + " has other axes than " + t.primary);
+        continue;
+      }
+      if (file->values.size() != t.table.values.size()) {
+        problems.push_back(what + " has " + std::to_string(file->values.size()) + " values, " +
+                           t.primary + " " + std::to_string(t.table.values.size()));
+        continue;
+      }
+      const std::string storage = *file->FindMetadata("errorStorage");  // the readers require it
+      const std::string *stated = t.table.FindMetadata("errorStorage");
+      const bool halfPrimary = stated && *stated == "half";
+      const double step = storage == "unorm8"    ? 1.0 / 255.0
+                          : storage == "unorm16" ? 1.0 / 65535.0
+                                                 : 0.0;
+      for (size_t i = 0; i < file->values.size(); ++i) {
+        const double p = t.table.values[i], a = file->values[i];
+        bool same;
+        if (step > 0.0)
+          same = std::abs(a - p) <= 0.5 * step + std::abs(p) * (halfPrimary ? 0x1p-11 : 0x1p-24);
+        else if (halfPrimary)
+          same = RoundToHalf(a) == p;
+        else
+          same =
+              static_cast<float>(a) == static_cast<float>(storage == "half" ? RoundToHalf(p) : p);
+        if (!same) {
+          const TexelIndex at = IndexOf(t.table, i / t.table.channels);
+          problems.push_back(
+              what + " differs at texel (" + std::to_string(at.x) + ", " + std::to_string(at.y) +
+              (t.table.is3D() ? ", " + std::to_string(at.z) : std::string()) + ") channel " +
+              std::to_string(i % t.table.channels) + ": " + FormatDouble(a) + " against " +
+              FormatDouble(p) + " (" + storage + ")");
+          break;
+        }
+      }
+      if (problems.empty()) compared.push_back(what + " (" + storage + ")");
+    }
+    if (!problems.empty()) {
+      std::string detail;
+      for (size_t i = 0; i < problems.size(); ++i) detail += (i ? "; " : "") + problems[i];
+      Add(name, "texture formats", CheckStatus::kFail, detail);
+    } else if (!compared.empty()) {
+      std::string list;
+      for (size_t i = 0; i < compared.size(); ++i) list += (i ? ", " : "") + compared[i];
+      Add(name, "texture formats", CheckStatus::kPass,
+          list + " hold " + t.primary + "'s values as their storage rounds them");
     }
   }
 
@@ -1290,7 +1381,8 @@ CheckReport CheckBakedSet(const std::string &dir, const CheckOptions &options) {
             [](const std::string &a, const std::string &b) { return a.size() > b.size(); });
   std::string alternatives;
   for (const std::string &n : names) alternatives += (alternatives.empty() ? "" : "|") + n;
-  const std::regex kTableFile("^(" + alternatives + R"()(_[A-Za-z0-9_]+)?(\.err)?\.(exr|bin|h)$)");
+  const std::regex kTableFile("^(" + alternatives +
+                              R"()(_[A-Za-z0-9_]+)?(\.err)?\.(exr|bin|h|png|ktx2|dds)$)");
   std::set<std::string> suffixes;
   for (const auto &entry : fs::directory_iterator(dir, ec)) {
     std::smatch m;

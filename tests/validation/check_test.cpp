@@ -219,6 +219,51 @@ TEST(Check, HalfHeadersAreHeldToTheirRounding) {
   fs::remove_all(h);
 }
 
+// The GPU texture files (PNG, KTX2, DDS): beside the EXR each holds its
+// values as its storage rounds them ("texture formats"); one KTX2 texel
+// moved by a float32 ulp fails; half or PNG files alone pass with their
+// stored bounds.
+TEST(Check, TextureFormatsAreHeldToTheirStorage) {
+  const fs::path d = test::Scratch("check_textures");
+  test::CommandResult run = Lutbake("bake --out " + d.string() +
+                                    " --size 8 --tolerance 1e-6 --format exr,png16,ktx2,dds-half");
+  ASSERT_EQ(run.status, 0) << run.output;
+  CheckReport r = CheckBakedSet(d.string(), Quick());
+  EXPECT_TRUE(r.passed());
+  const CheckResult *textures = Find(r, "dfg", "texture formats");
+  ASSERT_NE(textures, nullptr);
+  EXPECT_EQ(textures->status, CheckStatus::kPass);
+  EXPECT_NE(textures->detail.find("dfg.ktx2 (float32), dfg.dds (half), dfg.png (unorm16)"),
+            std::string::npos)
+      << textures->detail;
+  for (const char *format : {"ktx2-half", "png8"}) {
+    const fs::path alone = test::Scratch(std::string("check_textures_") + format);
+    run = Lutbake("bake --out " + alone.string() + " --size 8 --tolerance 1e-6 --format " + format);
+    ASSERT_EQ(run.status, 0) << run.output;
+    r = CheckBakedSet(alone.string(), Quick());
+    EXPECT_TRUE(r.passed()) << format;
+    fs::remove_all(alone);
+  }
+  // The last float32 of dfg.ktx2's level (the level ends the file).
+  const fs::path ktx2 = d / "dfg.ktx2";
+  {
+    std::fstream f(ktx2, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekg(-4, std::ios::end);
+    float v;
+    f.read(reinterpret_cast<char *>(&v), 4);
+    v = std::nextafter(v, 2.0f);
+    f.seekp(-4, std::ios::end);
+    f.write(reinterpret_cast<const char *>(&v), 4);
+  }
+  r = CheckBakedSet(d.string(), Quick());
+  textures = Find(r, "dfg", "texture formats");
+  ASSERT_NE(textures, nullptr);
+  EXPECT_EQ(textures->status, CheckStatus::kFail);
+  EXPECT_NE(textures->detail.find("dfg.ktx2 differs at texel (7, 7) channel 1"), std::string::npos)
+      << textures->detail;
+  fs::remove_all(d);
+}
+
 TEST(Check, CommandLineExitsAndNamesTheFailure) {
   test::CommandResult run = Lutbake("check " + GoodBake().string() + " --points 16");
   EXPECT_EQ(run.status, 0) << run.output;

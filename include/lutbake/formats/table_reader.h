@@ -12,11 +12,26 @@
 
 namespace lutbake {
 
+// The axes (metadata axisX, axisY, axisZ) and the definition (metadata
+// table, "T" or "T.err") of a table read from an image `width` texels wide
+// and `height` high (a 3D table's slices stacked along y). Throws IoError,
+// naming `path`, when they are missing, malformed or do not match the size.
+void ShapeFromMetadata(const std::string &path, long width, long height, Table *table);
+
 // T.exr: values (float32, widened), channel names, and the metadata (every
 // string attribute; errorMax and errorRms from their double attributes).
 // The axes and the table kind come from the metadata keys axisX, axisY and
 // table. `errors` is left empty: an EXR carries only errorMax.
 Table ReadExrTable(const std::string &path);
+
+// T.png (png_table.cpp), T.ktx2 (ktx2_table.cpp), T.dds (dds_table.cpp):
+// values as stored (q / (2^b - 1) for PNG; float32 or half, widened),
+// channel names Y or R, G, and the metadata the writer put in the file
+// (tEXt chunks; the KTX2 key lutbake.metadata; the DDS trailer). `errors`
+// is left empty: the files carry errorMax.
+Table ReadPngTable(const std::string &path);
+Table ReadKtx2Table(const std::string &path);
+Table ReadDdsTable(const std::string &path);
 
 // The storage of a generated header: its sizes, kValues as written (float,
 // or half bit patterns decoded), and

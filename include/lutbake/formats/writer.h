@@ -41,7 +41,7 @@ double RoundToHalf(double value);
 class TableWriter {
  public:
   virtual ~TableWriter() = default;
-  // "exr", "bin" or "header": the name used by --format.
+  // "exr", "bin", "header", "png8", ...: the name used by --format.
   virtual const char *formatName() const = 0;
   // File extension including the dot: ".exr", ".bin", ".h".
   virtual const char *extension() const = 0;
@@ -52,6 +52,16 @@ class TableWriter {
 std::unique_ptr<TableWriter> MakeExrWriter();
 std::unique_ptr<TableWriter> MakeBinaryWriter();
 std::unique_ptr<TableWriter> MakeCppHeaderWriter();
+// --format png8 / png16 (png_table.cpp): bits 8 or 16.
+std::unique_ptr<TableWriter> MakePngWriter(int bits);
+// --format ktx2 / ktx2-half (ktx2_table.cpp): storage kFloat32 or kHalf.
+std::unique_ptr<TableWriter> MakeKtx2Writer(ValueType storage);
+// --format dds / dds-half (dds_table.cpp): storage kFloat32 or kHalf.
+std::unique_ptr<TableWriter> MakeDdsWriter(ValueType storage);
+
+// Throws IoError naming `path`, the table and the texel when a value is NaN
+// or outside [0, 1]: `format` (e.g. "PNG") stores only that range.
+void RequireUnitRange(const Table &table, const std::string &path, const char *format);
 
 // Favg.h for a bake plan whose compensated materials all use Schlick's
 // Fresnel: F_avg = 20/21 F0 + 1/21 F90 as inline functions (lookup_Favg(F0)

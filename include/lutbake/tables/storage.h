@@ -16,14 +16,23 @@
 
 namespace lutbake {
 
-enum class ValueType { kFloat32, kFloat64, kHalf };
+// kUnorm8, kUnorm16: b-bit unsigned normalised integers (PNG), value
+// q / (2^b - 1) with q = floor(v (2^b - 1) + 0.5): rounded to nearest, at
+// most half a step 0.5 / (2^b - 1) from v for v in [0, 1] (the writers
+// refuse values outside [0, 1]).
+enum class ValueType { kFloat32, kFloat64, kHalf, kUnorm8, kUnorm16 };
 
-// "float32", "float64", "half".
+// "float32", "float64", "half", "unorm8", "unorm16".
 const char *ToString(ValueType type);
 
 // The value as the storage holds it (half: rounded to float, then to
-// binary16 nearest even, as the generated headers do), widened to double.
+// binary16 nearest even, as the generated headers do; unorm: q / (2^b - 1)),
+// widened to double.
 double StoredValue(double value, ValueType type);
+
+// The integer q a b-bit unorm stores for `value` in [0, 1] (clamped):
+// floor(value (2^b - 1) + 0.5). bits is 8 or 16.
+unsigned QuantizeUnorm(double value, int bits);
 
 // The smallest float32 not below `bound`, widened to double.
 double RoundUpToFloat(double bound);
