@@ -126,6 +126,11 @@ int RunCheck(const CheckCommandOptions &o) {
   }
   if (!failed.empty()) {
     std::cerr << "lutbake check: FAILED: " << JoinNames(failed) << "\n";
+    // Each failure's reason on stderr too, where it names the file (a
+    // truncated or foreign .bin) and what was expected.
+    for (const CheckResult &r : report.results)
+      if (r.status == CheckStatus::kFail)
+        std::cerr << "  " << r.subject << " " << r.check << ": " << r.detail << "\n";
     return 1;
   }
   if (!o.json) std::printf("all checks passed\n");

@@ -77,6 +77,20 @@ int main(int argc, char **argv) {
   } catch (const CLI::CallForVersion &e) {
     return app.exit(e);
   } catch (const CLI::ParseError &e) {
+    // No command recognised: CLI11 says only that one is required; name
+    // what was given instead and the commands there are.
+    if (app.get_subcommands().empty()) {
+      std::string commands;
+      for (const CLI::App *sub : app.get_subcommands({}))
+        commands += (commands.empty() ? "" : ", ") + sub->get_name();
+      if (argc > 1)
+        std::cerr << "lutbake: '" << argv[1] << "' is not a command; accepted: " << commands
+                  << "\n";
+      else
+        std::cerr << "lutbake: a command is required; accepted: " << commands << "\n";
+      std::cerr << "Run 'lutbake COMMAND --help' for the accepted options.\n";
+      return 2;
+    }
     std::cerr << "lutbake: " << e.what() << "\n";
     // Name the subcommand being parsed, if any, in the pointer to its help.
     std::string command = "COMMAND";

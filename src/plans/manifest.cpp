@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
-#include <sstream>
+#include <vector>
 
 #include "plans/json_input.h"
 
@@ -209,12 +209,17 @@ Manifest ReadManifest(const std::string &path) {
     throw InputError(path + ": is a directory, not a manifest file");
   std::ifstream file(path, std::ios::binary);
   if (!file) throw InputError(path + ": cannot open (missing or unreadable)");
-  std::ostringstream buffer;
-  buffer << file.rdbuf();
-  const std::string text = buffer.str();
-  if (text.size() > kMaxManifestBytes)
-    throw InputError(path + ": " + std::to_string(text.size()) +
-                     " bytes; manifests are read up to " + std::to_string(kMaxManifestBytes));
+  // Read in chunks and stop past the limit: a stream without end (a
+  // device such as /dev/zero, a FIFO) would otherwise be read until memory
+  // runs out.
+  std::string text;
+  std::vector<char> chunk(size_t{1} << 16);
+  while (file.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || file.gcount() > 0) {
+    text.append(chunk.data(), static_cast<size_t>(file.gcount()));
+    if (text.size() > kMaxManifestBytes)
+      throw InputError(path + ": more than " + std::to_string(kMaxManifestBytes) +
+                       " bytes; manifests are read up to " + std::to_string(kMaxManifestBytes));
+  }
   return ParseManifest(text, path);
 }
 
