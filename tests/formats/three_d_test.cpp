@@ -18,34 +18,15 @@
 #include "lutbake/tables/bake.h"
 #include "lutbake/tables/lookup.h"
 #include "support/cli_run.h"
+#include "support/small_tables.h"
 
 namespace lutbake {
 namespace {
 
 namespace fs = std::filesystem;
 
-// Slice z holds E (1 - 0.25 z), its bounds scaled alike.
-Table ThreeDTable(const Axis &z) {
-  BakeSettings s;
-  s.size = 4;
-  s.commandLine = "lutbake bake --test3d";
-  Table t = BakeTable(TableNamed("E"), s);
-  const std::vector<double> values = t.values, errors = t.errors;
-  t.z = z;
-  t.values.clear();
-  t.errors.clear();
-  for (int iz = 0; iz < z.count; ++iz)
-    for (size_t i = 0; i < values.size(); ++i) {
-      t.values.push_back(values[i] * (1.0 - 0.25 * iz));
-      t.errors.push_back(errors[i]);
-    }
-  for (size_t i = 0; i < t.metadata.size(); ++i)
-    if (t.metadata[i].first == "axisY") {
-      t.metadata.insert(t.metadata.begin() + static_cast<long>(i) + 1, {"axisZ", DescribeAxis(z)});
-      break;
-    }
-  return t;
-}
+// Slice z holds E (1 - 0.25 z) (support/small_tables.h).
+Table ThreeDTable(const Axis &z) { return test::ThreeSliceTable(z); }
 
 fs::path TempDir(const std::string &name) {
   const fs::path dir =

@@ -32,12 +32,11 @@ inline Table SmallTableOf(const TableDefinition &kind, int size = 6) {
   return BakeTable(kind, s);
 }
 
-inline Table ThreeSliceTable() {
+inline Table ThreeSliceTable(const Axis &z = LinearAxis("eta", 1.0, 2.0, 3)) {
   BakeSettings s;
   s.size = 4;
   s.commandLine = "lutbake bake --test3d";
   Table t = BakeTable(TableNamed("E"), s);
-  const Axis z = LinearAxis("eta", 1.0, 2.0, 3);
   const std::vector<double> values = t.values, errors = t.errors;
   t.z = z;
   t.values.clear();
