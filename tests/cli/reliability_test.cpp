@@ -343,4 +343,28 @@ TEST(Reliability, DirectoryMadeReadOnlyDuringTheRunFailsAndLeavesNothing) {
   fs::remove(log);
 }
 
+// A large request says what it will cost before the work: dfg 4096 x 4096
+// (16.8 M texels) gets one line with its texels, a time measured on a
+// sample and its memory; ended by SIGTERM during the bake, nothing is left.
+TEST(Reliability, LargeRequestEstimatesTimeAndMemoryFirst) {
+  const fs::path out = lutbake::test::Scratch("large");
+  const fs::path log = out.string() + ".log";
+  const pid_t pid =
+      Spawn({"bake", "--out", out.string(), "--tables", "dfg", "--size", "4096"}, log);
+  // The estimate bakes 256 texels twice; the whole table takes minutes.
+  std::this_thread::sleep_for(std::chrono::seconds(3));
+  ::kill(pid, SIGTERM);
+  const int status = WaitFor(pid, std::chrono::seconds(30));
+  const std::string output = ReadAll(log);
+  EXPECT_TRUE(status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 128 + SIGTERM) << output;
+  const std::vector<std::string> lines = Lines(output);
+  ASSERT_EQ(lines.size(), 2u) << output;
+  EXPECT_EQ(lines[0].rfind("lutbake bake: dfg: 16777216 texels, about ", 0), 0u) << output;
+  EXPECT_NE(lines[0].find(" s on "), std::string::npos) << output;
+  // 16777216 x (24 x 2 + 64) bytes = 1792 MiB.
+  EXPECT_NE(lines[0].find("about 1792 MiB of memory"), std::string::npos) << output;
+  EXPECT_FALSE(fs::exists(out));
+  fs::remove(log);
+}
+
 }  // namespace
