@@ -15,21 +15,13 @@ namespace lutbake {
 
 namespace {
 
-class DirectionalAlbedo final : public MicrofacetTable {
+class DirectionalAlbedo final : public MuRoughnessTable {
  public:
   const char *Name() const override { return "E"; }
   uint64_t SeedId() const override { return 0; }
   std::string Summary() const override {
     return "directional albedo E(mu, r) of the single-scattering microfacet BRDF, F = 1";
   }
-  void Axes(const BakeSettings &, int size, Axis *x, Axis *y) const override {
-    *x = MuAxis(size);
-    *y = RoughnessAxis(size);
-  }
-  std::vector<PointCoordinate> Coordinates(const BakeSettings &) const override {
-    return {MuCoordinate(), RoughnessCoordinate()};
-  }
-  int PlannedRoughnessAxis() const override { return 1; }
   PointValue Evaluate(const BakeSettings &s, double mu, double r) const override {
     const double alpha = r * r;
     return EvaluateAlbedo(*this, s, mu, alpha, PointSeed(SeedId(), mu, alpha, s.seed));

@@ -12,7 +12,7 @@ namespace lutbake {
 
 namespace {
 
-class SplitSum final : public MicrofacetTable {
+class SplitSum final : public MuRoughnessTable {
  public:
   const char *Name() const override { return "dfg"; }
   uint64_t SeedId() const override { return 3; }
@@ -23,14 +23,6 @@ class SplitSum final : public MicrofacetTable {
   std::vector<std::string> ChannelMeanings() const override { return {"A", "B"}; }
   std::string ChannelLayout() const override { return "R = A (scale), G = B (bias)"; }
   int DefaultSize() const override { return 128; }
-  void Axes(const BakeSettings &, int size, Axis *x, Axis *y) const override {
-    *x = MuAxis(size);
-    *y = RoughnessAxis(size);
-  }
-  std::vector<PointCoordinate> Coordinates(const BakeSettings &) const override {
-    return {MuCoordinate(), RoughnessCoordinate()};
-  }
-  int PlannedRoughnessAxis() const override { return 1; }
   PointValue Evaluate(const BakeSettings &s, double mu, double r) const override {
     const double alpha = r * r;
     return EvaluateAlbedo(*this, s, mu, alpha, PointSeed(SeedId(), mu, alpha, s.seed));

@@ -32,7 +32,7 @@ namespace lutbake {
 
 namespace {
 
-class F82Term final : public MicrofacetTable {
+class F82Term final : public MuRoughnessTable {
  public:
   const char *Name() const override { return "f82"; }
   // 6 to 9 are left to the dielectric tables of issue 15.
@@ -43,14 +43,6 @@ class F82Term final : public MicrofacetTable {
   std::vector<std::string> ChannelMeanings() const override { return {"C"}; }
   std::string ChannelLayout() const override { return "Y = C"; }
   int DefaultSize() const override { return 128; }
-  void Axes(const BakeSettings &, int size, Axis *x, Axis *y) const override {
-    *x = MuAxis(size);
-    *y = RoughnessAxis(size);
-  }
-  std::vector<PointCoordinate> Coordinates(const BakeSettings &) const override {
-    return {MuCoordinate(), RoughnessCoordinate()};
-  }
-  int PlannedRoughnessAxis() const override { return 1; }
   PointValue Evaluate(const BakeSettings &s, double mu, double r) const override {
     const double alpha = r * r;
     return EvaluateF82(*this, s, mu, alpha, PointSeed(SeedId(), mu, alpha, s.seed));

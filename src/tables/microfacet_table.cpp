@@ -330,4 +330,9 @@ PointValue EvaluateAlbedoAverage(const BakeSettings &s, double alpha, uint64_t p
   return q;
 }
 
+void MuRoughnessTable::Axes(const BakeSettings &, int size, Axis *x, Axis *y) const {
+  *x = MuAxis(size);
+  *y = RoughnessAxis(size);
+}
+
 }  // namespace lutbake

@@ -40,6 +40,18 @@ class MicrofacetTable : public TableDefinition {
   static void AddRoughnessNotes(HeaderText *text);
 };
 
+// The microfacet tables over (mu_o, r) (E, dfg, f82): x = the view cosine,
+// y = perceptual roughness, both at texel centres of [0, 1]; eval takes
+// --mu and --roughness; a plan narrows y.
+class MuRoughnessTable : public MicrofacetTable {
+ public:
+  void Axes(const BakeSettings &, int size, Axis *x, Axis *y) const override;
+  std::vector<PointCoordinate> Coordinates(const BakeSettings &) const override {
+    return {MuCoordinate(), RoughnessCoordinate()};
+  }
+  int PlannedRoughnessAxis() const override { return 1; }
+};
+
 // The F82 term C(mu_o, alpha) of table f82 (f82.cpp), with the settings'
 // estimator; conventions and errors as EvaluateAlbedo's (bake.h).
 PointValue EvaluateF82(const TableDefinition &table, const BakeSettings &settings, double mu_o,
