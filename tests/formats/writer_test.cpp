@@ -155,18 +155,21 @@ TEST(CppHeaderWriter, CompilesWithWerrorAndLooksUpExactly) {
         // On an axis that is not [0, 1] (Oren-Nayar's sigma in [0, pi/2]) a
         // float texel centre maps back to the centre only to float rounding:
         // the lookup may blend in ~1e-6 of a neighbour.
-        const bool unitAxes =
-            t.x.min == 0.0 && t.x.max == 1.0 && (!t.is2D() || (t.y.min == 0.0 && t.y.max == 1.0));
+        // A listed axis finds its node exactly, and [0, 1] maps back exactly.
+        const auto exact = [](const Axis &a) {
+          return a.listed() || a.count == 1 || (a.min == 0.0 && a.max == 1.0);
+        };
+        const bool unitAxes = exact(t.x) && (!t.is2D() || exact(t.y));
         for (int c = 0; c < t.channels; ++c) {
           const float expected = static_cast<float>(t.value(x, y, c));
           if (kind == &TableNamed("dfg"))
             std::snprintf(line, sizeof line,
-                          "  fail += engine::luts::lookup_dfg(%.9gf, %.9gf)[%d] != %#.9gf;\n", fx,
+                          "  fail += engine::luts::lookup_dfg(%#.9gf, %#.9gf)[%d] != %#.9gf;\n", fx,
                           fy, c, expected);
           else if (t.is3D())  // its one slice (SmallTable's depthSize 1)
             std::snprintf(
                 line, sizeof line,
-                "  fail += engine::luts::lookup_%s(%.9gf, %.9gf, float(%.17g)) != %#.9gf;\n",
+                "  fail += engine::luts::lookup_%s(%#.9gf, %#.9gf, float(%.17g)) != %#.9gf;\n",
                 kind->Name(), fx, fy, t.z.TexelCenter(0), expected);
           else if (t.is2D() && !unitAxes)
             std::snprintf(line, sizeof line,
@@ -175,12 +178,12 @@ TEST(CppHeaderWriter, CompilesWithWerrorAndLooksUpExactly) {
                           kind->Name(), fx, fy, expected);
           else if (t.is2D())
             std::snprintf(line, sizeof line,
-                          "  fail += engine::luts::lookup_%s(%.9gf, %.9gf) != %#.9gf;\n",
+                          "  fail += engine::luts::lookup_%s(%#.9gf, %#.9gf) != %#.9gf;\n",
                           kind->Name(), fx, fy, expected);
           else
             std::snprintf(line, sizeof line,
-                          "  fail += engine::luts::lookup_%s(%.9gf) != %#.9gf;\n", kind->Name(), fx,
-                          expected);
+                          "  fail += engine::luts::lookup_%s(%#.9gf) != %#.9gf;\n", kind->Name(),
+                          fx, expected);
           checks += line;
         }
       }
