@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # The library's layers (README "Layout"): each file includes lutbake headers
 # only from its own layer and the layers below it.
-#   core < models < integrators < tables < formats, plans < validation < cli
-# formats and plans are side by side: neither includes the other.
+#   core < models < integrators < tables < formats, plans < validation, presets < cli
+# formats and plans are side by side, so are validation and presets: neither
+# of a pair includes the other.
 set -euo pipefail
 repo="$(cd "$(dirname "$0")/.." && pwd)"
 rank() {
   case "$1" in
     core) echo 0 ;; models) echo 1 ;; integrators) echo 2 ;; tables) echo 3 ;;
-    formats | plans) echo 4 ;; validation) echo 5 ;; cli) echo 6 ;; *) echo -1 ;;
+    formats | plans) echo 4 ;; validation | presets) echo 5 ;; cli) echo 6 ;; *) echo -1 ;;
   esac
 }
 bad=0 checked=0

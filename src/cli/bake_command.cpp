@@ -22,6 +22,7 @@
 #include "lutbake/plans/plan.h"
 #include "lutbake/tables/bake.h"
 #include "lutbake/tables/storage.h"
+#include "preset_command.h"
 
 namespace lutbake::cli {
 
@@ -109,6 +110,11 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
   app.add_flag("--skip-unsupported", o.skipUnsupported,
                "With --scene: bake the plan although some materials use features lutbake does "
                "not bake (they get no table)");
+  app.add_option("--preset", o.preset,
+                 "Write exactly the textures an engine samples, in its layout, model and "
+                 "format, and DIR/preset.json describing them (lutbake presets lists them)")
+      ->type_name("NAME")
+      ->check(OneOf(PresetNames()));
   app.footer(
       "With no option beyond --out, every texel of E, Eavg and dfg is integrated by the "
       "quadrature until its bound is below 1e-8; with the float32 rounding of the stored "
@@ -117,7 +123,8 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
       "asks for another bound.\n\n"
       "Example:\n  lutbake bake --out out\n"
       "  lutbake bake --out luts --tables E,Eavg --ndf beckmann --size 64 --format exr,header\n"
-      "  lutbake bake --out luts --scene car.gltf   # only what the scene needs (lutbake plan)");
+      "  lutbake bake --out luts --scene car.gltf   # only what the scene needs (lutbake plan)\n"
+      "  lutbake bake --out dfg --preset filament   # Filament's dfg.inc, exact (lutbake presets)");
 }
 
 namespace {
@@ -217,6 +224,7 @@ ProgressFn TerminalProgress(const std::string &name) {
 }  // namespace
 
 int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app) {
+  if (!o.preset.empty()) return RunPresetBake(o, commandLine, app);
   BakeSettings settings;
   settings.ndf = ParseNdf(o.ndf);
   settings.smith = ParseSmith(o.smith);

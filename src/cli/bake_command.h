@@ -31,6 +31,7 @@ struct BakeOptions {
   bool json = false;
   SceneOptions scene;  // --scene / --manifest: bake a plan
   bool skipUnsupported = false;
+  std::string preset;  // --preset NAME: an engine's textures (preset_command.h)
 };
 
 // Option values (already validated) to library enums; shared with report.

@@ -10,6 +10,7 @@
 #include "interrupt.h"
 #include "lutbake/tables/bake.h"
 #include "plan_command.h"
+#include "preset_command.h"
 #include "report_command.h"
 
 namespace {
@@ -35,7 +36,9 @@ int main(int argc, char **argv) {
       "  lutbake plan --scene car.gltf   # what a scene needs, and why\n"
       "  lutbake eval --table E --mu 0.5 --roughness 0.3\n"
       "  lutbake report --out report    # error against time of every estimator\n"
-      "Run 'lutbake COMMAND --help' (bake, plan, check, eval, report, furnace) for their options.");
+      "  lutbake bake --preset filament --out dfg   # an engine's own table, exact\n"
+      "Run 'lutbake COMMAND --help' (bake, plan, check, eval, report, furnace, presets) for "
+      "their options.");
   lutbake::cli::BakeOptions bakeOptions;
   CLI::App *bake =
       app.add_subcommand("bake", "Bake tables into a directory (EXR, .bin, C++ header)");
@@ -63,6 +66,11 @@ int main(int argc, char **argv) {
   CLI::App *furnace = app.add_subcommand(
       "furnace", "The white furnace of a classic reflection model: albedo, average, pictures");
   lutbake::cli::SetupFurnaceCommand(*furnace, furnaceOptions);
+
+  bool presetsJson = false;
+  CLI::App *presets = app.add_subcommand(
+      "presets", "The engine presets of bake --preset: each engine's textures, exact");
+  lutbake::cli::SetupPresetsCommand(*presets, presetsJson);
 
   lutbake::cli::IgnoreFileSizeSignal();
   std::string commandLine = "lutbake";
@@ -107,6 +115,7 @@ int main(int argc, char **argv) {
     if (check->parsed()) return lutbake::cli::RunCheck(checkOptions);
     if (report->parsed()) return lutbake::cli::RunReport(reportOptions);
     if (furnace->parsed()) return lutbake::cli::RunFurnace(furnaceOptions, *furnace);
+    if (presets->parsed()) return lutbake::cli::RunPresets(presetsJson);
   } catch (const std::exception &e) {
     std::cerr << "lutbake: " << e.what() << "\n";
     return 1;

@@ -14,6 +14,7 @@ std::unique_ptr<TableWriter> MakeWriter(const std::string &formatName) {
   if (formatName == "ktx2-half") return MakeKtx2Writer(ValueType::kHalf);
   if (formatName == "dds") return MakeDdsWriter(ValueType::kFloat32);
   if (formatName == "dds-half") return MakeDdsWriter(ValueType::kHalf);
+  if (formatName == "c-array") return MakeCArrayWriter();
   return nullptr;
 }
 

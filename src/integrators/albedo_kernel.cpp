@@ -59,9 +59,23 @@ HWY_INLINE void GgxSplitSumLanes(D d, const GgxSplitSumConstants &k, bool tail, 
   const V a2s2 = hn::Mul(alpha2, hn::Mul(hn::Sub(one, mu_i), hn::Add(one, mu_i)));
   const V root = hn::Sqrt(hn::Add(hn::Mul(mu_i, mu_i), a2s2));
   const V m = hn::Mul(hn::Mul(two, mu_i), hn::Add(root, mu_i));  // 2 mu_i (root + mu_i)
-  const V g = k.smith == SmithForm::kCorrelated
-                  ? hn::Div(m, hn::Add(hn::Mul(m, muL_o), hn::Mul(mu_o, a2s2)))
-                  : hn::Div(m, hn::Mul(muL_o, hn::Add(m, a2s2)));
+  V g;
+  if (k.fitted == FittedVisibility::kSchlickGgx) {
+    // G1(mu_i) G1(mu_o) / mu_o = mu_i / ((mu_i (1 - k) + k) (mu_o (1 - k) + k)).
+    const V kk = hn::Set(d, k.fitParameter), onek = hn::Set(d, 1.0 - k.fitParameter);
+    const V denominatorO = hn::Set(d, k.mu_o * (1.0 - k.fitParameter) + k.fitParameter);
+    g = hn::Div(mu_i, hn::Mul(hn::Add(hn::Mul(mu_i, onek), kk), denominatorO));
+  } else if (k.fitted == FittedVisibility::kSmithJointApprox) {
+    // G2 / mu_o = 2 mu_i / (mu_i (mu_o (1 - a) + a) + mu_o (mu_i (1 - a) + a)).
+    const V a = hn::Set(d, k.fitParameter), onea = hn::Set(d, 1.0 - k.fitParameter);
+    const V termO = hn::Set(d, k.mu_o * (1.0 - k.fitParameter) + k.fitParameter);
+    g = hn::Div(hn::Mul(two, mu_i),
+                hn::Add(hn::Mul(mu_i, termO), hn::Mul(mu_o, hn::Add(hn::Mul(mu_i, onea), a))));
+  } else {
+    g = k.smith == SmithForm::kCorrelated
+            ? hn::Div(m, hn::Add(hn::Mul(m, muL_o), hn::Mul(mu_o, a2s2)))
+            : hn::Div(m, hn::Mul(muL_o, hn::Add(m, a2s2)));
+  }
   const auto visible = hn::And(hn::Gt(mu_i, zero), hn::Gt(Q, zero));
   const V f = hn::IfThenElseZero(visible, hn::Mul(hn::Mul(weight, densityQ), g));
   // Schlick: Fc = y^5, 1 - Fc = oh (1 + y + y^2 + y^3 + y^4), y = 1 - oh (math.h).

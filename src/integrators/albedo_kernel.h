@@ -13,6 +13,7 @@
 
 #include <cstddef>
 
+#include "lutbake/integrators/albedo_quadrature.h"
 #include "lutbake/models/smith.h"
 
 namespace lutbake::kernel {
@@ -23,6 +24,10 @@ struct GgxSplitSumConstants {
   double mu_o = 1.0;  // = cos(theta_o)
   double L_o = 0.0;   // mu_o Lambda(mu_o)
   SmithForm smith = SmithForm::kCorrelated;
+  // A fitted G2 in place of Smith's (albedo_quadrature.h, FittedVisibility),
+  // with its parameter: Schlick-GGX's k, or the joint approximation's alpha.
+  FittedVisibility fitted = FittedVisibility::kNone;
+  double fitParameter = 0.0;
 };
 
 // A batch of panels of one kind (core or tail) and one Gauss rule: panel p

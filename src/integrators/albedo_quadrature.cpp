@@ -60,6 +60,10 @@ struct Setup {
   Ndf ndf;
   SmithForm smith;
   double mu_o, s_o, L_o;
+  // A fitted G2 (FittedVisibility) and its parameter; L_o above is then not
+  // Smith's but the L with G2 / mu_o <= 1 / (mu_o + L) (the mass bound).
+  FittedVisibility fitted = FittedVisibility::kNone;
+  double fitParameter = 0.0;
   double d_mu;            // distance of G2/mu_o's nearest singularity from mu_i = 0
   double a;               // outer scale
   double negligibleMass;  // kNegligibleShare x tolerance
@@ -71,6 +75,8 @@ Setup MakeSetup(const Ndf &ndf, SmithForm smith, double mu_o, double tolerance) 
           mu_o,
           SafeSqrt((1.0 - mu_o) * (1.0 + mu_o)),
           ndf.MuLambda(mu_o),
+          FittedVisibility::kNone,
+          0,
           0,
           0,
           kNegligibleShare * tolerance};
@@ -328,7 +334,8 @@ Sums EvaluateLevel(const Setup &t, int level, bool f82 = false) {
   const GaussLegendreRule &inner = GaussLegendre(kLevels[level].inner);
   double core[3] = {0.0, 0.0, 0.0}, tail[3] = {0.0, 0.0, 0.0};
   if (t.ndf.kind == NdfKind::kGgx) {
-    const kernel::GgxSplitSumConstants constants{t.ndf.alpha, t.mu_o, t.L_o, t.smith};
+    const kernel::GgxSplitSumConstants constants{t.ndf.alpha, t.mu_o,   t.L_o,
+                                                 t.smith,     t.fitted, t.fitParameter};
     const auto sum = f82 ? kernel::SumGgxSplitSumF82 : kernel::SumGgxSplitSum;
     sum(constants, false, inner.n, inner.x, inner.w, s.core.View(), core);
     sum(constants, true, inner.n, inner.x, inner.w, s.tail.View(), tail);
@@ -347,9 +354,45 @@ int FirstLevel(const Ndf &ndf) { return ndf.kind == NdfKind::kBeckmann ? kBeckma
 
 }  // namespace
 
+namespace {
+
+SplitSumQuadrature SplitSumOn(const Setup &setup, double tolerance, bool split);
+
+}  // namespace
+
 SplitSumQuadrature IntegrateSplitSumQuadrature(const Ndf &ndf, SmithForm smith, double mu_o,
                                                double tolerance, bool split) {
-  const Setup setup = MakeSetup(ndf, smith, mu_o, tolerance);
+  return SplitSumOn(MakeSetup(ndf, smith, mu_o, tolerance), tolerance, split);
+}
+
+SplitSumQuadrature IntegrateFittedSplitSumQuadrature(double alpha, FittedVisibility visibility,
+                                                     double mu_o, double tolerance) {
+  const Ndf ndf{NdfKind::kGgx, alpha};
+  Setup setup = MakeSetup(ndf, SmithForm::kSeparable, mu_o, tolerance);
+  setup.fitted = visibility;
+  if (visibility == FittedVisibility::kSchlickGgx) {
+    // G2 / mu_o <= G1(mu_o) / mu_o = 1 / (mu_o + k (1 - mu_o)); pole at
+    // mu_i = -k / (1 - k).
+    const double k = alpha / 2.0;
+    setup.fitParameter = k;
+    setup.L_o = k * (1.0 - mu_o);
+    setup.d_mu = std::min(k / (1.0 - k), alpha);
+  } else if (visibility == FittedVisibility::kSmithJointApprox) {
+    // G2 / mu_o = 2 mu_i / (2 mu_o mu_i (1 - a) + a (mu_i + mu_o)) <=
+    // min(1 / mu_o, 2 / (a + 2 mu_o (1 - a))) = 1 / (mu_o + L),
+    // L = max(0, a (1/2 - mu_o)); pole at mu_i = -a mu_o / (2 mu_o (1 - a) + a).
+    const double a = alpha;
+    setup.fitParameter = a;
+    setup.L_o = std::max(0.0, a * (0.5 - mu_o));
+    setup.d_mu = std::min(a * mu_o / (2.0 * mu_o * (1.0 - a) + a), alpha);
+  }
+  return SplitSumOn(setup, tolerance, true);
+}
+
+namespace {
+
+SplitSumQuadrature SplitSumOn(const Setup &setup, double tolerance, bool split) {
+  const Ndf &ndf = setup.ndf;
   SplitSumQuadrature result;
   const int first = FirstLevel(ndf);
   Sums previous = EvaluateLevel(setup, first);
@@ -385,6 +428,8 @@ SplitSumQuadrature IntegrateSplitSumQuadrature(const Ndf &ndf, SmithForm smith, 
   }
   return result;
 }
+
+}  // namespace
 
 F82Quadrature IntegrateF82Quadrature(const Ndf &ndf, SmithForm smith, double mu_o,
                                      double tolerance) {

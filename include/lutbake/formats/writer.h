@@ -59,6 +59,10 @@ std::unique_ptr<TableWriter> MakeKtx2Writer(ValueType storage);
 // --format dds / dds-half (dds_table.cpp): storage kFloat32 or kHalf.
 std::unique_ptr<TableWriter> MakeDdsWriter(ValueType storage);
 
+// --format c-array (c_array_writer.cpp): T.h declaring static const float
+// T[N] = {...}, as Blender Cycles' shader.tables does (engine presets).
+std::unique_ptr<TableWriter> MakeCArrayWriter();
+
 // Throws IoError naming `path`, the table and the texel when a value is NaN
 // or outside [0, 1]: `format` (e.g. "PNG") stores only that range.
 void RequireUnitRange(const Table &table, const std::string &path, const char *format);

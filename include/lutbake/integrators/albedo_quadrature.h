@@ -85,6 +85,21 @@ struct SplitSumQuadrature {
 SplitSumQuadrature IntegrateSplitSumQuadrature(const Ndf &ndf, SmithForm smith, double mu_o,
                                                double tolerance, bool split);
 
+// The fitted G2 that engines bake their split sums with instead of Smith's
+// (engine presets, lutbake/presets/preset.h); GGX only:
+//   kSchlickGgx        G1(mu) = mu / (mu (1 - k) + k), G2 = G1(mu_o) G1(mu_i),
+//                      k = alpha / 2 (Karis 2013; LearnOpenGL, Godot)
+//   kSmithJointApprox  G2 = 2 mu_o mu_i / (mu_i (mu_o (1 - a) + a) +
+//                      mu_o (mu_i (1 - a) + a)), a = alpha (Unreal's
+//                      Vis_SmithJointApprox: Heitz 2014's height-correlated
+//                      form with Lambda replaced by a linear fit)
+// Both are at most 1 on [0, 1]^2 and have their nearest pole off the domain
+// at mu_i = -k / (1 - k) and -a mu_o / (2 mu_o (1 - a) + a), the distances
+// the panels are graded by, as for the separable and correlated Smith G.
+enum class FittedVisibility { kNone, kSchlickGgx, kSmithJointApprox };
+SplitSumQuadrature IntegrateFittedSplitSumQuadrature(double alpha, FittedVisibility visibility,
+                                                     double mu_o, double tolerance);
+
 struct F82Quadrature {
   double C = 0, bound = 0;
   uint64_t evaluations = 0;

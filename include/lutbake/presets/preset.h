@@ -1,0 +1,141 @@
+// Engine presets: the textures an engine's shaders sample, as data.
+//
+// An engine reads its lookup table with its own conventions: which quantity
+// lies on each texture axis and through which mapping (Unity HDRP puts
+// sqrt(NdotV) on x, EEVEE sqrt(1 - NoV) on y), where the texels sit
+// (centres, u = (i + 0.5) / N, for a GPU's linear filter at uv; edges, u =
+// i / (N - 1), for a half-texel remap or a CPU lookup), the order of the
+// rows, what each channel holds (A and B, or Filament's B and E, a cloth
+// or Charlie channel, an F82 term), the model the engine integrates (the
+// visibility form, alpha from roughness) and the storage. A preset states
+// all of it, one PresetTexture per texture, and BakePresetTexture computes
+// every texel with lutbake's integrators at exactly the coordinates the
+// engine's shader asks for. Each preset is one definition in
+// src/presets/<engine>.cpp, listed in src/presets/registry.cpp; nothing
+// else knows an engine.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "lutbake/core/cancellation.h"
+#include "lutbake/models/sheen.h"
+#include "lutbake/tables/settings.h"
+#include "lutbake/tables/storage.h"
+#include "lutbake/tables/table.h"
+
+namespace lutbake {
+
+// How a texture coordinate u in [0, 1] gives its axis's quantity q:
+//   kLinear         q = u
+//   kSquare         q = u^2       (the axis holds sqrt(q): HDRP's sqrt(NdotV))
+//   kOneMinusSquare q = 1 - u^2   (the axis holds sqrt(1 - q): EEVEE's sqrt(1 - NoV))
+enum class PresetMapping { kLinear, kSquare, kOneMinusSquare };
+// Where texel i of N lies in u:
+//   kCentres  u = (i + 0.5) / N   (sampled at uv by a linear filter)
+//   kEdges    u = i / (N - 1)     (N >= 2: a half-texel remap, a CPU lookup)
+enum class TexelPlacement { kCentres, kEdges };
+
+// "u", "u^2", "1 - u^2"; "centres", "edges".
+const char *ToString(PresetMapping mapping);
+const char *ToString(TexelPlacement placement);
+
+struct PresetAxis {
+  // What the axis drives: "mu" (n.v) or "roughness" (the engine's
+  // roughness, which PresetModel maps to alpha).
+  std::string quantity;
+  PresetMapping mapping = PresetMapping::kLinear;
+  TexelPlacement placement = TexelPlacement::kCentres;
+  int count = 1;
+  // The first texel in memory (and in the file) is u = 1: a top-down image
+  // of a table whose v = 0 is at the bottom.
+  bool reversed = false;
+  // The quantity is clamped to [lowest, highest] before it is evaluated
+  // (an engine's own clamp, e.g. mu >= 1e-4).
+  double lowest = 0.0, highest = 1.0;
+
+  // u of texel i (before `reversed`), and the quantity there (clamped).
+  double Coordinate(int i) const;
+  double Quantity(int i) const;
+};
+
+// The microfacet G an engine integrates its split sum with.
+//   kCorrelated  height-correlated Smith, 1 / (1 + Lambda_o + Lambda_i)
+//   kSeparable   separable Smith G1(o) G1(i)
+//   kSchlickGgx  Schlick-GGX with k = alpha / 2, separable (UE4 school)
+//   kSmithJointApprox  Unreal's Vis_SmithJointApprox (albedo_quadrature.h)
+enum class PresetVisibility { kCorrelated, kSeparable, kSchlickGgx, kSmithJointApprox };
+const char *ToString(PresetVisibility visibility);
+
+// alpha from the engine's roughness q: q^2 (perceptual roughness) or q.
+enum class PresetAlpha { kSquared, kLinear };
+const char *ToString(PresetAlpha alpha);
+
+struct PresetModel {
+  PresetVisibility visibility = PresetVisibility::kCorrelated;
+  PresetAlpha alpha = PresetAlpha::kSquared;
+  double alphaMin = 0.0;  // alpha = max(alpha, alphaMin): an engine's clamp
+  // The Charlie sheen channel (meaning "sheen_E"): its visibility and alpha.
+  SheenVisibility sheenVisibility = SheenVisibility::kCharlie;
+  PresetAlpha sheenAlpha = PresetAlpha::kLinear;
+};
+
+// A channel: stored = scale * meaning + offset, meaning one of
+//   "A", "B"    the split-sum terms: int f (1 - (1 - v.h)^5) cos and
+//               int f (1 - v.h)^5 cos, F = 1 in f, so that Schlick's
+//               F0 A + F90 B is the specular albedo
+//   "E"         A + B, the directional albedo (F = 1)
+//   "Eavg"      2 int_0^1 E(mu) mu dmu (a 1D table over roughness)
+//   "sheen_E"   the Charlie sheen's directional albedo
+//   "f82"       the F82-tint term C (tables f82): F0 A + F90 B - a C
+//   "disney_diffuse"  Burley's diffuse albedo as Unity HDRP renormalises it
+//               (preset.cpp, DisneyDiffuseAlbedo), at perceptual roughness
+//   "one", "zero"  constants (a channel the engine does not read)
+// A format that holds only [0, 1] (PNG) takes min(stored, clampMax); the
+// texel's bound then adds what the clamp moved it by, so that it still
+// covers the value as stored.
+struct PresetChannel {
+  std::string meaning;
+  double scale = 1.0, offset = 0.0;
+  double clampMax = 1e300;
+};
+
+// One texture (or embedded array) of a preset.
+struct PresetTexture {
+  std::string file;    // the file name written: "dfg.inc", "brdf_lut.png"
+  std::string format;  // the --format writer that writes it: "exr", "png16", "ktx2-half", ...
+  std::vector<PresetAxis> axes;  // x, then y (1 or 2 axes)
+  std::vector<PresetChannel> channels;
+  PresetModel model;
+  std::string sampling;  // the engine's lookup, as its shader writes it
+  std::string source;    // the engine file(s) the conventions come from
+  std::string notes;     // a defect not reproduced, a clamp, how the engine uses it
+};
+
+struct Preset {
+  std::string name;     // --preset NAME
+  std::string engine;   // "Filament", "Unreal Engine 4/5", ...
+  std::string summary;  // one line for `lutbake presets`
+  std::vector<PresetTexture> textures;
+};
+
+// Every preset, in the order `lutbake presets` lists them, and the one
+// called `name` (nullptr if none).
+const std::vector<const Preset *> &AllPresets();
+const Preset *FindPreset(const std::string &name);
+// "filament, unreal, ...".
+std::string PresetNameList();
+
+// The storage the texture's format holds (half, unorm8, float32, ...).
+ValueType PresetStorage(const PresetTexture &texture);
+
+// Every texel of `texture`, with its integration bound, in the texture's
+// own memory order: a Table whose axes are u itself (x, y over [0, 1] at
+// the texture's placement: edges as the linear axis [-h, 1 + h], h = 0.5 /
+// (N - 1), whose centres are i / (N - 1)), its channels as the engine
+// reads them, named R, G, B, A. Bounds: the integrators' bound times
+// |scale|. Polls `cancellation` between rows.
+Table BakePresetTexture(const PresetTexture &texture, const std::string &presetName,
+                        const CancellationToken *cancellation = nullptr);
+
+}  // namespace lutbake

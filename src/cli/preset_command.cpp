@@ -1,0 +1,218 @@
+#include "preset_command.h"
+
+#include <tbb/global_control.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "cli_util.h"
+#include "interrupt.h"
+#include "lutbake/formats/atomic_output.h"
+#include "lutbake/formats/writer.h"
+#include "lutbake/presets/preset.h"
+#include "lutbake/tables/bake.h"
+#include "lutbake/tables/storage.h"
+
+namespace lutbake::cli {
+
+std::vector<std::string> PresetNames() {
+  std::vector<std::string> names;
+  for (const Preset *preset : AllPresets()) names.push_back(preset->name);
+  return names;
+}
+
+namespace {
+
+// What preset.json says of one axis.
+nlohmann::ordered_json AxisJson(const PresetAxis &axis, const char *which) {
+  nlohmann::ordered_json j;
+  j["axis"] = which;
+  j["quantity"] = axis.quantity;
+  j["mapping"] = std::string(axis.quantity) + " = " + ToString(axis.mapping);
+  j["placement"] = ToString(axis.placement);
+  j["texelCoordinate"] =
+      axis.placement == TexelPlacement::kCentres ? "u = (i + 0.5) / N" : "u = i / (N - 1)";
+  j["texels"] = axis.count;
+  j["firstTexel"] = axis.reversed ? "u = 1" : "u = 0";
+  if (axis.lowest != 0.0 || axis.highest != 1.0)
+    j["clamp"] = nlohmann::ordered_json::array({axis.lowest, axis.highest});
+  return j;
+}
+
+}  // namespace
+
+int RunPresetBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app) {
+  // A preset fixes the tables, models, sizes, storage and formats.
+  for (const char *flag :
+       {"--tables",          "--format",           "--ndf",         "--smith",
+        "--fresnel",         "--sheen-visibility", "--sheen-alpha", "--size",
+        "--eta-size",        "--estimator",        "--samples",     "--replicates",
+        "--tolerance",       "--sampling-only",    "--max-samples", "--seed",
+        "--error-map",       "--namespace",        "--header-type", "--bin-type",
+        "--scene",           "--manifest",         "--no-ibl",      "--no-compensation",
+        "--skip-unsupported"})
+    if (app.count(flag) > 0) {
+      std::cerr << "lutbake bake: " << flag << " cannot be combined with --preset " << o.preset
+                << ": the preset fixes the tables, models, sizes and formats (accepted with "
+                   "--preset: --out, --threads, --json)\n";
+      return 2;
+    }
+  const Preset *preset = FindPreset(o.preset);
+  if (!preset) {  // the option's validator already refused it
+    std::cerr << "lutbake bake: --preset " << o.preset << ": accepted: " << PresetNameList()
+              << "\n";
+    return 2;
+  }
+  bool created = false;
+  if (const int status = PrepareOutputOrComplain("bake", o.outDir, &created)) return status;
+  RemoveStaleTemporaries(o.outDir);
+  const int threads = ThreadCount(o.threads);
+  tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
+                                  static_cast<size_t>(threads));
+  const InterruptGuard interrupt;
+  const auto start = std::chrono::steady_clock::now();
+
+  nlohmann::ordered_json manifest;
+  manifest["preset"] = preset->name;
+  manifest["engine"] = preset->engine;
+  manifest["summary"] = preset->summary;
+  manifest["lutbakeVersion"] = LutbakeVersion();
+  manifest["commandLine"] = commandLine;
+  manifest["files"] = nlohmann::ordered_json::array();
+  try {
+    AtomicOutputSet output;
+    const WriteOptions writeOptions;
+    for (const PresetTexture &texture : preset->textures) {
+      const auto textureStart = std::chrono::steady_clock::now();
+      Table table = BakePresetTexture(texture, preset->name, &interrupt.token());
+      table.metadata.emplace_back("lutbakeVersion", LutbakeVersion());
+      table.metadata.emplace_back("commandLine", commandLine);
+      const std::unique_ptr<TableWriter> writer = MakeWriter(texture.format);
+      if (!writer) throw IoError(texture.file + ": no writer for format " + texture.format);
+      const std::string path = (std::filesystem::path(o.outDir) / texture.file).string();
+      interrupt.token().ThrowIfCancelled();
+      output.Write(path, [&](const std::string &temporary) {
+        writer->Write(table, temporary, writeOptions);
+      });
+      const ValueType storage = PresetStorage(texture);
+      const BoundSummary bounds = SummarizeStoredBounds(table, storage);
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - textureStart).count();
+
+      nlohmann::ordered_json f;
+      f["file"] = texture.file;
+      f["format"] = texture.format;
+      f["storage"] = ToString(storage);
+      f["width"] = table.width();
+      f["height"] = table.height();
+      f["channelCount"] = table.channels;
+      nlohmann::ordered_json axes = nlohmann::ordered_json::array();
+      static const char *const kWhich[] = {"x", "y"};
+      for (size_t a = 0; a < texture.axes.size(); ++a)
+        axes.push_back(AxisJson(texture.axes[a], kWhich[a]));
+      f["axes"] = axes;
+      f["memoryOrder"] =
+          table.is2D() ? "rows of x, y outer; channels interleaved" : "x; channels interleaved";
+      nlohmann::ordered_json channels = nlohmann::ordered_json::array();
+      for (size_t c = 0; c < texture.channels.size(); ++c) {
+        nlohmann::ordered_json ch;
+        ch["channel"] = table.channelNames[c];
+        ch["meaning"] = texture.channels[c].meaning;
+        if (texture.channels[c].scale != 1.0) ch["scale"] = texture.channels[c].scale;
+        if (texture.channels[c].offset != 0.0) ch["offset"] = texture.channels[c].offset;
+        channels.push_back(ch);
+      }
+      f["channels"] = channels;
+      nlohmann::ordered_json model;
+      model["ndf"] = "ggx";
+      model["visibility"] = ToString(texture.model.visibility);
+      model["alpha"] = ToString(texture.model.alpha);
+      if (texture.model.alphaMin > 0.0) model["alphaMin"] = texture.model.alphaMin;
+      for (const PresetChannel &c : texture.channels)
+        if (c.meaning == "sheen_E") {
+          model["sheenVisibility"] = ToString(texture.model.sheenVisibility);
+          model["sheenAlpha"] = ToString(texture.model.sheenAlpha);
+          break;
+        }
+      f["model"] = model;
+      f["errorMax"] = bounds.max;
+      f["errorRms"] = bounds.rms;
+      f["integrationErrorMax"] = table.MaxError();
+      f["sampling"] = texture.sampling;
+      f["source"] = texture.source;
+      if (!texture.notes.empty()) f["notes"] = texture.notes;
+      manifest["files"].push_back(f);
+
+      char line[300];
+      std::snprintf(line, sizeof line,
+                    "%-24s %4d x %-4d %d channel(s) %-8s %7.3f s  error max %.2e (as stored)\n",
+                    texture.file.c_str(), table.width(), table.height(), table.channels,
+                    ToString(storage), seconds, bounds.max);
+      std::cerr << line;
+    }
+    const std::string path = (std::filesystem::path(o.outDir) / "preset.json").string();
+    output.Write(path, [&](const std::string &temporary) {
+      const std::string text = manifest.dump(2) + "\n";
+      std::FILE *file = std::fopen(temporary.c_str(), "wb");
+      if (!file) throw IoError(path + ": cannot write: " + std::strerror(errno));
+      const bool ok = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+      if (std::fclose(file) != 0 || !ok)
+        throw IoError(path + ": cannot write: " + std::strerror(errno));
+    });
+    interrupt.token().ThrowIfCancelled();
+    output.Commit();
+  } catch (const Cancelled &c) {
+    if (created) {
+      std::error_code ec;
+      std::filesystem::remove(o.outDir, ec);
+    }
+    std::cerr << "lutbake bake: interrupted by " << SignalName(c.reason())
+              << "; nothing written to " << o.outDir << "\n";
+    return 128 + c.reason();
+  } catch (const IoError &e) {
+    std::cerr << "lutbake bake: " << e.what() << "\n";
+    if (created) {
+      std::error_code ec;
+      std::filesystem::remove(o.outDir, ec);
+    }
+    return 1;
+  }
+  manifest["seconds"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (o.json) std::cout << manifest.dump(2) << "\n";
+  return 0;
+}
+
+void SetupPresetsCommand(CLI::App &app, bool &json) {
+  app.add_flag("--json", json, "Print the presets as one JSON object");
+  app.footer("Example:\n  lutbake presets\n  lutbake bake --preset filament --out dfg");
+}
+
+int RunPresets(bool json) {
+  if (json) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const Preset *preset : AllPresets()) {
+      nlohmann::ordered_json p;
+      p["name"] = preset->name;
+      p["engine"] = preset->engine;
+      p["summary"] = preset->summary;
+      nlohmann::ordered_json files = nlohmann::ordered_json::array();
+      for (const PresetTexture &t : preset->textures) files.push_back(t.file);
+      p["files"] = files;
+      list.push_back(p);
+    }
+    std::cout << nlohmann::ordered_json({{"presets", list}}).dump(2) << "\n";
+    return 0;
+  }
+  for (const Preset *preset : AllPresets()) {
+    std::printf("%-22s %s\n", preset->name.c_str(), preset->summary.c_str());
+  }
+  return 0;
+}
+
+}  // namespace lutbake::cli

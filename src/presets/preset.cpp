@@ -1,0 +1,294 @@
+// Baking a preset's texture: the engine's coordinates of every texel, the
+// model's alpha there, and the channels from lutbake's integrators.
+#include "lutbake/presets/preset.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "lutbake/formats/writer.h"
+#include "lutbake/integrators/albedo_quadrature.h"
+#include "lutbake/integrators/gauss_legendre.h"
+#include "lutbake/tables/table_definition.h"
+
+namespace lutbake {
+
+const char *ToString(PresetMapping mapping) {
+  switch (mapping) {
+    case PresetMapping::kLinear: return "u";
+    case PresetMapping::kSquare: return "u^2";
+    case PresetMapping::kOneMinusSquare: return "1 - u^2";
+  }
+  return "?";
+}
+
+const char *ToString(TexelPlacement placement) {
+  return placement == TexelPlacement::kCentres ? "centres" : "edges";
+}
+
+const char *ToString(PresetVisibility visibility) {
+  switch (visibility) {
+    case PresetVisibility::kCorrelated: return "smith-correlated";
+    case PresetVisibility::kSeparable: return "smith-separable";
+    case PresetVisibility::kSchlickGgx: return "schlick-ggx k = alpha / 2";
+    case PresetVisibility::kSmithJointApprox: return "smith-joint-approx a = alpha";
+  }
+  return "?";
+}
+
+const char *ToString(PresetAlpha alpha) {
+  return alpha == PresetAlpha::kSquared ? "alpha = roughness^2" : "alpha = roughness";
+}
+
+double PresetAxis::Coordinate(int i) const {
+  if (placement == TexelPlacement::kEdges)
+    return count > 1 ? static_cast<double>(i) / (count - 1) : 0.0;
+  return (i + 0.5) / count;
+}
+
+double PresetAxis::Quantity(int i) const {
+  const double u = Coordinate(i);
+  double q = u;
+  if (mapping == PresetMapping::kSquare) q = u * u;
+  if (mapping == PresetMapping::kOneMinusSquare) q = 1.0 - u * u;
+  return std::clamp(q, lowest, highest);
+}
+
+ValueType PresetStorage(const PresetTexture &texture) {
+  const std::string &f = texture.format;
+  if (f == "png8") return ValueType::kUnorm8;
+  if (f == "png16") return ValueType::kUnorm16;
+  if (f.size() > 5 && f.compare(f.size() - 5, 5, "-half") == 0) return ValueType::kHalf;
+  return ValueType::kFloat32;
+}
+
+namespace {
+
+struct Needs {
+  bool splitSum = false, sheen = false, f82 = false, average = false, disney = false;
+};
+
+Needs NeedsOf(const PresetTexture &texture) {
+  Needs needs;
+  for (const PresetChannel &c : texture.channels) {
+    if (c.meaning == "A" || c.meaning == "B" || c.meaning == "E")
+      needs.splitSum = true;
+    else if (c.meaning == "sheen_E")
+      needs.sheen = true;
+    else if (c.meaning == "f82")
+      needs.f82 = true;
+    else if (c.meaning == "Eavg")
+      needs.average = true;
+    else if (c.meaning == "disney_diffuse")
+      needs.disney = true;
+    else if (c.meaning != "one" && c.meaning != "zero")
+      throw std::invalid_argument("preset channel '" + c.meaning + "' is not known");
+  }
+  return needs;
+}
+
+double AlphaOf(PresetAlpha mapping, double roughness, double alphaMin) {
+  const double alpha = mapping == PresetAlpha::kSquared ? roughness * roughness : roughness;
+  return std::max(alpha, alphaMin);
+}
+
+// The split-sum terms {A, B} at (mu, alpha) under the texture's model: the
+// exact Smith forms through table dfg's integrator, the fitted ones through
+// the same panel quadrature with their G2 (albedo_quadrature.h); at alpha =
+// 0 (the mirror: G2 = 1 in every form, o.h = mu) A = 1 - (1 - mu)^5 and B =
+// (1 - mu)^5 exactly.
+PointValue SplitSum(const PresetModel &model, double mu, double alpha) {
+  if (model.visibility == PresetVisibility::kSchlickGgx ||
+      model.visibility == PresetVisibility::kSmithJointApprox) {
+    PointValue v;
+    v.quadrature = true;
+    if (alpha == 0.0) {
+      const double fc = std::pow(1.0 - mu, 5.0);
+      v.value[0] = 1.0 - fc;
+      v.value[1] = fc;
+      v.exact = true;
+      return v;
+    }
+    const SplitSumQuadrature q = IntegrateFittedSplitSumQuadrature(
+        alpha,
+        model.visibility == PresetVisibility::kSchlickGgx ? FittedVisibility::kSchlickGgx
+                                                          : FittedVisibility::kSmithJointApprox,
+        mu, kDefaultQuadratureTolerance);
+    if (!q.converged)
+      throw std::runtime_error("the fitted split sum did not converge at mu = " + FormatDouble(mu) +
+                               ", alpha = " + FormatDouble(alpha));
+    v.value[0] = q.A;
+    v.value[1] = q.B;
+    v.error[0] = q.boundA;
+    v.error[1] = q.boundB;
+    return v;
+  }
+  BakeSettings settings;
+  settings.smith = model.visibility == PresetVisibility::kSeparable ? SmithForm::kSeparable
+                                                                    : SmithForm::kCorrelated;
+  return TableNamed("dfg").Evaluate(settings, mu, std::sqrt(alpha));
+}
+
+// The albedo of Burley's diffuse as Unity HDRP renormalises it
+// (DisneyDiffuseNoPI / pi):
+//   f = F(mu_i) F(mu_o) / (1.03571 pi),  F(u) = 1 + g (1 - u)^5,
+//   g = fd90 - 1 = p - 1/2 + p (l.v),  l.v = mu_o mu_i + s_o s_i cos(phi),
+// p the perceptual roughness. Write g = P + Q cos(phi), P = p - 1/2 + p mu_o
+// mu_i, Q = p s_o s_i: the product F(mu_i) F(mu_o) = 1 + g (a + b) + g^2 a b
+// (a = (1 - mu_i)^5, b = (1 - mu_o)^5) averages over phi to 1 + P (a + b) +
+// (P^2 + Q^2 / 2) a b, and Q^2 = p^2 s_o^2 (1 - mu_i^2), so
+//   albedo = 2 / 1.03571 int_0^1 mu_i [1 + P (a + b) + (P^2 + Q^2/2) a b] dmu_i,
+// a polynomial of degree 8 in mu_i: Gauss-Legendre with 8 nodes is exact,
+// up to rounding (bound 1e-15).
+PointValue DisneyDiffuseAlbedo(double mu_o, double p) {
+  const GaussLegendreRule &rule = GaussLegendre(8);
+  const double b = std::pow(1.0 - mu_o, 5.0), s2_o = (1.0 - mu_o) * (1.0 + mu_o);
+  double sum = 0.0;
+  for (int k = 0; k < rule.n; ++k) {
+    const double mu_i = rule.x[k], a = std::pow(1.0 - mu_i, 5.0);
+    const double P = p - 0.5 + p * mu_o * mu_i;
+    const double Q2 = p * p * s2_o * (1.0 - mu_i) * (1.0 + mu_i);
+    sum += rule.w[k] * mu_i * (1.0 + P * (a + b) + (P * P + 0.5 * Q2) * a * b);
+  }
+  PointValue v;
+  v.value[0] = 2.0 / 1.03571 * sum;
+  v.error[0] = 1e-15;
+  v.quadrature = true;
+  return v;
+}
+
+}  // namespace
+
+Table BakePresetTexture(const PresetTexture &texture, const std::string &presetName,
+                        const CancellationToken *cancellation) {
+  if (texture.axes.empty() || texture.axes.size() > 2)
+    throw std::invalid_argument(texture.file + ": a preset texture has one or two axes");
+  const Needs needs = NeedsOf(texture);
+  int muAxis = -1, roughnessAxis = -1;
+  for (size_t a = 0; a < texture.axes.size(); ++a) {
+    if (texture.axes[a].quantity == "mu") muAxis = static_cast<int>(a);
+    if (texture.axes[a].quantity == "roughness") roughnessAxis = static_cast<int>(a);
+  }
+  if (roughnessAxis < 0 || (muAxis < 0 && !needs.average))
+    throw std::invalid_argument(texture.file +
+                                ": a preset texture needs its mu and roughness axes");
+
+  Table table;
+  table.name = texture.file.substr(0, texture.file.find('.'));
+  const auto tableAxis = [](const PresetAxis &axis, const char *name) {
+    Axis out = LinearAxis(name, 0.0, 1.0, axis.count);
+    if (axis.placement == TexelPlacement::kEdges && axis.count > 1) {
+      const double h = 0.5 / (axis.count - 1);
+      out.min = -h;
+      out.max = 1.0 + h;
+    }
+    if (axis.reversed) std::swap(out.min, out.max);
+    return out;
+  };
+  table.x = tableAxis(texture.axes[0], "u");
+  if (texture.axes.size() > 1) table.y = tableAxis(texture.axes[1], "v");
+  table.channels = static_cast<int>(texture.channels.size());
+  static const char *const kNames[] = {"R", "G", "B", "A"};
+  for (int c = 0; c < table.channels; ++c) table.channelNames.push_back(kNames[c % 4]);
+  table.values.assign(table.texelCount() * table.channels, 0.0);
+  table.errors.assign(table.values.size(), 0.0);
+
+  const PresetModel &model = texture.model;
+  const int width = table.width(), height = table.height();
+  // The texel in memory at (ix, iy) holds the axis texel i = ix, or N - 1 -
+  // ix when the axis runs from u = 1.
+  const auto axisTexel = [](const PresetAxis &axis, int index) {
+    return axis.reversed ? axis.count - 1 - index : index;
+  };
+  tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int> &rows) {
+    for (int iy = rows.begin(); iy != rows.end(); ++iy) {
+      if (cancellation) cancellation->ThrowIfCancelled();
+      for (int ix = 0; ix < width; ++ix) {
+        const int index[2] = {ix, iy};
+        const PresetAxis &ra = texture.axes[static_cast<size_t>(roughnessAxis)];
+        const double roughness = ra.Quantity(axisTexel(ra, index[roughnessAxis]));
+        double mu = 0.0;
+        if (muAxis >= 0) {
+          const PresetAxis &ma = texture.axes[static_cast<size_t>(muAxis)];
+          mu = ma.Quantity(axisTexel(ma, index[muAxis]));
+        }
+        const double alpha = AlphaOf(model.alpha, roughness, model.alphaMin);
+        PointValue split, sheen, f82, average, disney;
+        if (needs.disney) disney = DisneyDiffuseAlbedo(mu, roughness);
+        if (needs.splitSum) split = SplitSum(model, mu, alpha);
+        if (needs.sheen) {
+          BakeSettings settings;
+          settings.sheenVisibility = model.sheenVisibility;
+          settings.sheenAlpha = model.sheenAlpha == PresetAlpha::kSquared ? SheenAlpha::kSquared
+                                                                          : SheenAlpha::kLinear;
+          sheen = TableNamed("sheen_E").Evaluate(settings, mu, roughness);
+        }
+        if (needs.f82) {
+          BakeSettings settings;
+          settings.smith = model.visibility == PresetVisibility::kSeparable
+                               ? SmithForm::kSeparable
+                               : SmithForm::kCorrelated;
+          f82 = TableNamed("f82").Evaluate(settings, mu, std::sqrt(alpha));
+        }
+        if (needs.average) {
+          BakeSettings settings;
+          settings.smith = model.visibility == PresetVisibility::kSeparable
+                               ? SmithForm::kSeparable
+                               : SmithForm::kCorrelated;
+          average = TableNamed("Eavg").Evaluate(settings, std::sqrt(alpha), 0.0);
+        }
+        for (int c = 0; c < table.channels; ++c) {
+          const PresetChannel &channel = texture.channels[static_cast<size_t>(c)];
+          double value = 0.0, error = 0.0;
+          if (channel.meaning == "A") {
+            value = split.value[0];
+            error = split.error[0];
+          } else if (channel.meaning == "B") {
+            value = split.value[1];
+            error = split.error[1];
+          } else if (channel.meaning == "E") {
+            value = split.value[0] + split.value[1];
+            error = split.error[0] + split.error[1];
+          } else if (channel.meaning == "sheen_E") {
+            value = sheen.value[0];
+            error = sheen.error[0];
+          } else if (channel.meaning == "f82") {
+            value = f82.value[0];
+            error = f82.error[0];
+          } else if (channel.meaning == "Eavg") {
+            value = average.value[0];
+            error = average.error[0];
+          } else if (channel.meaning == "disney_diffuse") {
+            value = disney.value[0];
+            error = disney.error[0];
+          } else if (channel.meaning == "one") {
+            value = 1.0;
+          }
+          const size_t at = table.index(ix, iy, c);
+          const double stored = channel.scale * value + channel.offset;
+          table.values[at] = std::min(stored, channel.clampMax);
+          table.errors[at] = std::fabs(channel.scale) * error + (stored - table.values[at]);
+        }
+      }
+    }
+  });
+
+  table.metadata = {{"table", table.name},
+                    {"preset", presetName},
+                    {"presetSource", texture.source},
+                    {"sampling", texture.sampling}};
+  std::string layout;
+  for (int c = 0; c < table.channels; ++c) {
+    const PresetChannel &channel = texture.channels[static_cast<size_t>(c)];
+    layout += (c ? ", " : "") + table.channelNames[static_cast<size_t>(c)] + " = " +
+              (channel.scale != 1.0 ? FormatDouble(channel.scale) + " " : "") + channel.meaning +
+              (channel.offset != 0.0 ? " + " + FormatDouble(channel.offset) : "");
+  }
+  table.metadata.emplace_back("channelLayout", layout);
+  return table;
+}
+
+}  // namespace lutbake

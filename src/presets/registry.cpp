@@ -1,0 +1,50 @@
+// The registry: every engine preset, once, in the order `lutbake presets`
+// lists them.
+#include <string>
+
+#include "presets.h"
+
+namespace lutbake {
+
+const std::vector<const Preset *> &AllPresets() {
+  static const std::vector<const Preset *> presets = {
+      &FilamentPreset(),
+      &FilamentMobilePreset(),
+      &UnrealPreset(),
+      &UnityHdrpPreset(),
+      &GodotPreset(),
+      &ThreejsPreset(),
+      &GltfSampleRendererPreset(),
+      &LearnOpenGlPreset(),
+      &EeveePreset(),
+      &CyclesPreset(),
+  };
+  return presets;
+}
+
+const Preset *FindPreset(const std::string &name) {
+  for (const Preset *preset : AllPresets())
+    if (preset->name == name) return preset;
+  return nullptr;
+}
+
+std::string PresetNameList() {
+  std::string list;
+  for (const Preset *preset : AllPresets()) list += (list.empty() ? "" : ", ") + preset->name;
+  return list;
+}
+
+PresetAxis CentresAxis(const char *quantity, int count) {
+  PresetAxis axis;
+  axis.quantity = quantity;
+  axis.count = count;
+  return axis;
+}
+
+PresetAxis EdgesAxis(const char *quantity, int count) {
+  PresetAxis axis = CentresAxis(quantity, count);
+  axis.placement = TexelPlacement::kEdges;
+  return axis;
+}
+
+}  // namespace lutbake
