@@ -1,0 +1,324 @@
+// Engine presets: each texture agrees with the engine's own shipped table
+// in the engine's layout (up to that table's own error, which shows the
+// layout is right), with independent values (to the storage's precision,
+// which shows the values are), and describes itself in preset.json.
+#include "lutbake/presets/preset.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "lutbake/integrators/furnace.h"
+#include "lutbake/integrators/gauss_legendre.h"
+#include "lutbake/tables/storage.h"
+#include "support/cli_run.h"
+#include "support/csv.h"
+
+namespace lutbake {
+namespace {
+
+using test::DataPath;
+using test::ReadCsv;
+
+const PresetTexture &TextureOf(const std::string &preset, size_t index = 0) {
+  const Preset *p = FindPreset(preset);
+  EXPECT_NE(p, nullptr) << preset;
+  return p->textures.at(index);
+}
+
+double Median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+TEST(Presets, EveryEngineOfTheIssueIsListed) {
+  for (const char *name : {"filament", "unreal", "unity-hdrp", "godot", "threejs",
+                           "gltf-sample-renderer", "learnopengl", "eevee", "cycles"})
+    EXPECT_NE(FindPreset(name), nullptr) << name;
+  const auto listed = test::Lutbake("presets");
+  EXPECT_EQ(listed.status, 0);
+  for (const Preset *p : AllPresets()) EXPECT_NE(listed.output.find(p->name), std::string::npos);
+}
+
+// Cycles' table_ggx_E (2^23 samples, 6 decimals) at its own edge texels, and
+// the independent quadrature (1e-10) at exactly those points.
+TEST(Presets, CyclesEdgeTexelsMatchCyclesAndTheReference) {
+  const Table table = BakePresetTexture(TextureOf("cycles"), "cycles");
+  ASSERT_EQ(table.width(), 32);
+  ASSERT_EQ(table.height(), 32);
+  const auto rows = ReadCsv(DataPath("presets/cycles_table_ggx_E.csv"));
+  ASSERT_EQ(rows.size(), 1024u);
+  double worstPeer = 0, worstRef = 0;
+  for (const auto &row : rows) {
+    const int x = static_cast<int>(row.Number("col_x")), y = static_cast<int>(row.Number("row_y"));
+    const double ours = table.value(x, y);
+    const double stored = StoredValue(ours, ValueType::kFloat32);
+    const double bound = StoredBound(ours, table.errors[table.index(x, y, 0)], ValueType::kFloat32);
+    EXPECT_LE(std::abs(stored - row.Number("ref_E_hc")), bound + 1e-10) << x << " " << y;
+    worstRef = std::max(worstRef, std::abs(stored - row.Number("ref_E_hc")));
+    worstPeer = std::max(worstPeer, std::abs(stored - row.Number("cycles_E")));
+  }
+  // Cycles' own error: 9.9e-7 (refdata) plus its 6-decimal printing.
+  EXPECT_LT(worstPeer, 1.5e-6);
+  EXPECT_LT(worstRef, 1e-7);
+}
+
+// three.js's 32 x 32 table (r181, 4096 samples): the transposed layout
+// (x = roughness, y = NdotV) and the independent values at its texels.
+TEST(Presets, ThreejsLayoutMatchesItsTableAndValuesTheReference) {
+  PresetTexture texture = TextureOf("threejs");
+  texture.axes[0].count = texture.axes[1].count = 32;
+  const Table table = BakePresetTexture(texture, "threejs");
+  const auto rows = ReadCsv(DataPath("presets/threejs_dfg_lut_32x32.csv"));
+  ASSERT_EQ(rows.size(), 1024u);
+  std::vector<double> peer, transposed;
+  for (const auto &row : rows) {
+    const int x = static_cast<int>(row.Number("col_x")), y = static_cast<int>(row.Number("row_y"));
+    for (int c = 0; c < 2; ++c) {
+      const double ours = table.value(x, y, c), bound = table.errors[table.index(x, y, c)];
+      EXPECT_LE(std::abs(ours - row.Number(c ? "ref_B_hc" : "ref_A_hc")), bound + 1e-11);
+      const double theirs = row.Number(c ? "three_bias_B" : "three_scale_A");
+      peer.push_back(std::abs(ours - theirs));
+      transposed.push_back(std::abs(table.value(y, x, c) - theirs));
+    }
+  }
+  // Half floats and 4096 samples: three.js is within 1.9e-2 at grazing
+  // rows, ~1e-4 typically; read transposed it is far off.
+  EXPECT_LT(*std::max_element(peer.begin(), peer.end()), 2e-2);
+  EXPECT_LT(Median(peer), 1e-3);
+  EXPECT_GT(Median(transposed), 2e-2);
+
+  // The current 16 x 16 table, as the preset writes it (half floats).
+  const Table current = BakePresetTexture(TextureOf("threejs"), "threejs");
+  const auto rows16 = ReadCsv(DataPath("presets/threejs_dfg_lut_16x16.csv"));
+  ASSERT_EQ(rows16.size(), 256u);
+  std::vector<double> diff16;
+  for (const auto &row : rows16) {
+    const int x = static_cast<int>(row.Number("i")), y = static_cast<int>(row.Number("j"));
+    diff16.push_back(
+        std::abs(StoredValue(current.value(x, y, 0), ValueType::kHalf) - row.Number("R_A_scale")));
+    diff16.push_back(
+        std::abs(StoredValue(current.value(x, y, 1), ValueType::kHalf) - row.Number("G_B_bias")));
+  }
+  EXPECT_LT(*std::max_element(diff16.begin(), diff16.end()), 1.5e-2);
+  EXPECT_LT(Median(diff16), 1e-3);
+}
+
+// Filament's shipped 64 x 64 dfg.inc (v1.19.0, 1024 samples for B and E):
+// R = B, G = E, B = cloth. Its memory row j was integrated at roughness
+// (j + 1.5) / 64, the preset's row j + 1: the shifted comparison agrees to
+// the peer's noise, the unshifted one shows the defect the preset does not
+// reproduce.
+TEST(Presets, FilamentChannelsMatchItsTableOneRowShifted) {
+  const Table table = BakePresetTexture(TextureOf("filament-mobile"), "filament-mobile");
+  ASSERT_EQ(table.width(), 64);
+  ASSERT_EQ(table.channels, 3);
+  const auto rows = ReadCsv(DataPath("presets/filament_dfg_64x64.csv"));
+  ASSERT_EQ(rows.size(), 4096u);
+  std::vector<double> shifted, unshifted, cloth;
+  for (const auto &row : rows) {
+    const int i = static_cast<int>(row.Number("i")), j = static_cast<int>(row.Number("j"));
+    if (j + 1 >= 64) continue;
+    for (int c = 0; c < 2; ++c) {
+      const double theirs = row.Number(c ? "G_E" : "R_B");
+      shifted.push_back(std::abs(table.value(i, j + 1, c) - theirs));
+      unshifted.push_back(std::abs(table.value(i, j, c) - theirs));
+    }
+    // The cloth channel (4096 uniform samples of a peaked lobe) where the
+    // peer's estimator is not dominated by its noise.
+    if ((j + 1.5) / 64 >= 0.5)
+      cloth.push_back(std::abs(table.value(i, j + 1, 2) - row.Number("B_sheenE_ashikhmin")));
+  }
+  EXPECT_LT(Median(shifted), 2e-3);
+  EXPECT_GT(Median(unshifted), 3.0 * Median(shifted));
+  EXPECT_LT(Median(cloth), 5e-3);
+}
+
+// The fitted visibilities against the furnace integrator (adaptive
+// Gauss-Kronrod over the half vector, another code path): Schlick-GGX.
+TEST(Presets, SchlickGgxTexelsMatchTheFurnaceIntegrator) {
+  for (const char *name : {"learnopengl", "godot"}) {
+    PresetTexture texture = TextureOf(name);
+    texture.axes[0].count = texture.axes[1].count = 12;
+    const Table table = BakePresetTexture(texture, name);
+    const bool rb = texture.channels[0].meaning == "B";  // godot: R = B, G = E
+    for (int iy = 0; iy < 12; ++iy) {
+      const PresetAxis &ra = texture.axes[1];
+      const double r = ra.Quantity(ra.reversed ? 11 - iy : iy);
+      FurnaceModel m;
+      m.kind = FurnaceModelKind::kMicrofacet;
+      m.visibility = FurnaceVisibility::kSchlickGgxIbl;
+      m.fresnel = FurnaceFresnel::kSchlick;
+      m.f0 = 0.0;
+      const FurnaceIntegrator b(m, r);
+      m.f0 = 1.0;
+      const FurnaceIntegrator e(m, r);
+      for (int ix = 0; ix < 12; ++ix) {
+        const double mu = texture.axes[0].Quantity(ix);
+        const FurnaceValue B = b.Albedo(mu).albedo, E = e.Albedo(mu).albedo;
+        const double first = rb ? B.value : E.value - B.value, second = rb ? E.value : B.value;
+        const double firstError = rb ? B.error : E.error + B.error,
+                     secondError = rb ? E.error : B.error;
+        EXPECT_LE(std::abs(table.value(ix, iy, 0) - first),
+                  table.errors[table.index(ix, iy, 0)] + firstError)
+            << name << " mu " << mu << " r " << r;
+        EXPECT_LE(std::abs(table.value(ix, iy, 1) - second),
+                  table.errors[table.index(ix, iy, 1)] + secondError)
+            << name << " mu " << mu << " r " << r;
+      }
+    }
+  }
+}
+
+// A brute-force albedo over light directions (theta_i, phi_i), Gauss-Legendre
+// on panels x panels panels of 24 nodes, for integrands that are smooth above the
+// horizon: f(mu_o, i) mu_i.
+template <class F>
+double BruteForceAlbedo(F brdf, int panels = 8) {
+  const GaussLegendreRule &rule = GaussLegendre(24);
+  const double pi = 3.14159265358979323846;
+  double sum = 0;
+  for (int pt = 0; pt < panels; ++pt)
+    for (int pp = 0; pp < panels; ++pp)
+      for (int a = 0; a < rule.n; ++a)
+        for (int b = 0; b < rule.n; ++b) {
+          const double theta = (pt + rule.x[a]) / panels * (pi / 2);
+          const double phi = (pp + rule.x[b]) / panels * pi;
+          const double w = rule.w[a] * rule.w[b] * (pi / 2 / panels) * (pi / panels);
+          const double mu_i = std::cos(theta), s_i = std::sin(theta);
+          sum += 2 * w * brdf(mu_i, s_i, phi) * mu_i * s_i;
+        }
+  return sum;
+}
+
+// Unity HDRP's Disney diffuse channel (z + 0.5) against the BRDF integrated
+// by brute force: the closed azimuth and polynomial rule of the preset are
+// not used.
+TEST(Presets, HdrpDisneyDiffuseMatchesBruteForce) {
+  const PresetTexture &texture = TextureOf("unity-hdrp");
+  const Table table = BakePresetTexture(texture, "unity-hdrp");
+  const double pi = 3.14159265358979323846;
+  for (int ix : {0, 5, 31, 63})
+    for (int iy : {0, 17, 40, 63}) {
+      const double mu_o = texture.axes[0].Quantity(ix), p = texture.axes[1].Quantity(iy);
+      const double s_o = std::sqrt(1 - mu_o * mu_o);
+      const double value = BruteForceAlbedo([&](double mu_i, double s_i, double phi) {
+        const double lv = mu_o * mu_i + s_o * s_i * std::cos(phi);
+        const double fd90 = 0.5 + p + p * lv;
+        const auto F = [&](double u) { return 1 + (fd90 - 1) * std::pow(1 - u, 5); };
+        return F(mu_i) * F(mu_o) / 1.03571 / pi;
+      });
+      EXPECT_NEAR(table.value(ix, iy, 2) + 0.5, value, 1e-9) << mu_o << " " << p;
+    }
+  // The axes: x holds sqrt(NdotV) at texel edges.
+  EXPECT_DOUBLE_EQ(texture.axes[0].Quantity(63), 1.0);
+  EXPECT_DOUBLE_EQ(texture.axes[0].Quantity(21), (21.0 / 63) * (21.0 / 63));
+}
+
+// Unreal's Vis_SmithJointApprox split sum against the BRDF integrated over
+// light directions (the horizon is the hemisphere's edge here: no cut).
+TEST(Presets, UnrealJointApproxMatchesBruteForce) {
+  PresetTexture texture = TextureOf("unreal");
+  const Table table = BakePresetTexture(texture, "unreal");
+  const double pi = 3.14159265358979323846;
+  for (int ix : {3, 40, 90, 127})
+    for (int iy : {12, 20, 31}) {  // roughness >= 0.39: the lobe is wide enough for the rule
+      const double mu_o = texture.axes[0].Quantity(ix), r = texture.axes[1].Quantity(iy);
+      const double a = r * r, s_o = std::sqrt(1 - mu_o * mu_o);
+      double weights[2];
+      for (int c = 0; c < 2; ++c)
+        weights[c] = BruteForceAlbedo(
+            [&](double mu_i, double s_i, double phi) {
+              const double hx = s_o + s_i * std::cos(phi), hy = s_i * std::sin(phi),
+                           hz = mu_o + mu_i;
+              const double len = std::sqrt(hx * hx + hy * hy + hz * hz);
+              const double nh = hz / len, vh = (s_o * hx + mu_o * hz) / len;
+              const double d = a * a / (pi * std::pow(nh * nh * (a * a - 1) + 1, 2));
+              const double vis = 0.5 / (mu_i * (mu_o * (1 - a) + a) + mu_o * (mu_i * (1 - a) + a));
+              const double fc = std::pow(1 - vh, 5);
+              return d * vis * (c == 0 ? 1 - fc : fc);
+            },
+            32);
+      for (int c = 0; c < 2; ++c)
+        EXPECT_NEAR(table.value(ix, iy, c), weights[c], 2e-6) << mu_o << " " << r << " " << c;
+    }
+}
+
+// EEVEE: x = roughness at edges, y = sqrt(1 - NV) at edges, channel 2 the
+// F82 term; against the tables it is made of, at its own coordinates.
+TEST(Presets, EeveeAxesAreEdgesInSqrtOneMinusNv) {
+  const PresetTexture &texture = TextureOf("eevee");
+  EXPECT_DOUBLE_EQ(texture.axes[1].Quantity(0), 1.0);
+  EXPECT_DOUBLE_EQ(texture.axes[1].Quantity(63), 0.0);
+  EXPECT_DOUBLE_EQ(texture.axes[1].Quantity(21), 1.0 - (21.0 / 63) * (21.0 / 63));
+  EXPECT_DOUBLE_EQ(texture.axes[0].Quantity(63), 1.0);
+  const Table table = BakePresetTexture(texture, "eevee");
+  // Row 0 is normal incidence: the mirror column (r = 0) is A = 1, B = 0.
+  EXPECT_NEAR(table.value(0, 0, 0), 1.0, 1e-12);
+  EXPECT_NEAR(table.value(0, 0, 1), 0.0, 1e-12);
+  // F0 A + F90 B - a C stays in [0, 1] at F82-tint's extremes.
+  for (int iy = 0; iy < 64; ++iy)
+    for (int ix = 0; ix < 64; ++ix) {
+      EXPECT_GE(table.value(ix, iy, 2), -1e-12);
+      EXPECT_LE(table.value(ix, iy, 2), table.value(ix, iy, 1) / 4 + 1e-9);
+    }
+}
+
+// The CLI: the files, and preset.json describing them well enough to read
+// the file without knowing the preset.
+TEST(Presets, BakeWritesFilesAndPresetJsonThatDescribesThem) {
+  const auto dir = test::Scratch("preset_unreal");
+  const auto run = test::Lutbake("bake --preset unreal --out " + dir.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  std::ifstream in(dir / "preset.json");
+  const nlohmann::json manifest = nlohmann::json::parse(in);
+  EXPECT_EQ(manifest["preset"], "unreal");
+  ASSERT_EQ(manifest["files"].size(), 1u);
+  const auto &f = manifest["files"][0];
+  EXPECT_EQ(f["file"], "PreIntegratedGF.png");
+  EXPECT_EQ(f["storage"], "unorm16");
+  EXPECT_EQ(f["axes"][0]["quantity"], "mu");
+  EXPECT_EQ(f["axes"][0]["placement"], "centres");
+  EXPECT_EQ(f["axes"][1]["quantity"], "roughness");
+  EXPECT_EQ(f["channels"][0]["meaning"], "A");
+  EXPECT_EQ(f["channels"][1]["meaning"], "B");
+  // Read the PNG with OpenImageIO and compare with the integral at the
+  // coordinates preset.json states, within its errorMax.
+  auto image = OIIO::ImageInput::open((dir / "PreIntegratedGF.png").string());
+  ASSERT_TRUE(image);
+  const OIIO::ImageSpec spec = image->spec();
+  ASSERT_EQ(spec.width, 128);
+  ASSERT_EQ(spec.height, 32);
+  std::vector<float> pixels(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
+  ASSERT_TRUE(image->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()));
+  const double errorMax = f["errorMax"];
+  EXPECT_LT(errorMax, 1e-5);
+  const Table exact = BakePresetTexture(TextureOf("unreal"), "unreal");
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 128; ++x)
+      for (int c = 0; c < 2; ++c)
+        ASSERT_LE(std::abs(pixels[(static_cast<size_t>(y) * 128 + x) * spec.nchannels + c] -
+                           exact.value(x, y, c)),
+                  errorMax + 1e-7);
+}
+
+TEST(Presets, OptionsAPresetFixesAreRefused) {
+  const auto dir = test::Scratch("preset_refused");
+  for (const char *extra : {"--tables dfg", "--format exr", "--size 64", "--smith separable"}) {
+    const auto run =
+        test::Lutbake("bake --preset godot --out " + dir.string() + " " + std::string(extra));
+    EXPECT_EQ(run.status, 2) << extra;
+    EXPECT_NE(run.output.find("cannot be combined with --preset"), std::string::npos) << extra;
+  }
+  const auto unknown = test::Lutbake("bake --preset unity --out " + dir.string());
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.output.find("unity-hdrp"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir / "preset.json"));
+}
+
+}  // namespace
+}  // namespace lutbake
