@@ -18,6 +18,7 @@
 #include "cli_util.h"
 #include "interrupt.h"
 #include "lutbake/formats/atomic_output.h"
+#include "lutbake/formats/source_formats.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/plans/plan.h"
 #include "lutbake/tables/bake.h"
@@ -86,10 +87,22 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
                  "(T.png, 8 or 16 bits rounded to nearest: adds at most half a step, 1/510 or "
                  "1/131070; values must lie in [0, 1]), ktx2 / ktx2-half (T.ktx2, float32 or "
                  "binary16), dds / dds-half (T.dds with the DX10 header, float32 or binary16); "
-                 "every file's errorMax covers its own storage")
+                 "source embeddings: inc / inc-half (T.inc, Filament-style literals for an array "
+                 "initialiser), js / js-half and ts / ts-half (T.js, T.ts: ES or TypeScript "
+                 "module, Float32Array or binary16 Uint16Array), glsl-array, hlsl-array, "
+                 "wgsl-array, msl-array (T.glsl, T.hlsl, T.wgsl, T.metal: a constant float32 "
+                 "array and its bilinear lookup); every file's errorMax covers its own storage")
       ->capture_default_str()
-      ->check(ListOf(
-          {"exr", "bin", "header", "png8", "png16", "ktx2", "ktx2-half", "dds", "dds-half"}));
+      ->check(ListOf({"exr", "bin", "header", "png8", "png16", "ktx2", "ktx2-half", "dds",
+                      "dds-half", "inc", "inc-half", "js", "js-half", "ts", "ts-half", "glsl-array",
+                      "hlsl-array", "wgsl-array", "msl-array"}));
+  app.add_option("--shader", o.shaders,
+                 "Also write shader functions for the baked tables, one file per language: "
+                 "lutbake.glsl, lutbake.hlsl, lutbake.wgsl, lutbake.metal (texture lookups at "
+                 "each table's texel-centre convention; split sum, F82 term, Kulla-Conty and "
+                 "sheen albedo scaling where their tables are baked)")
+      ->type_name("LANGS")
+      ->check(ListOf({"glsl", "hlsl", "wgsl", "msl"}));
   app.add_option("--namespace", o.headerNamespace, "Namespace of the generated C++ headers")
       ->capture_default_str()
       ->check(CppNamespace());
@@ -379,6 +392,7 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
         o.headerType == "half" ? HeaderStorage::kHalf : HeaderStorage::kFloat;
     writeOptions.binaryValues = o.binType == "double" ? ValueType::kFloat64 : ValueType::kFloat32;
     std::vector<std::string> unreached;
+    std::vector<Table> shapes;  // the baked tables without values, for --shader
     for (const BakeJob &job : jobs) {
       BakeStats stats;
       Table table = BakeTableOn(*job.table, job.settings, job.x, job.y, job.z,
@@ -394,6 +408,11 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
           writer->Write(table, temporary, writeOptions);
         });
         files.push_back(path);
+      }
+      if (!o.shaders.empty()) {
+        shapes.push_back(table);
+        shapes.back().values.clear();
+        shapes.back().errors.clear();
       }
       if (o.errorMap) {
         const std::string path = base.string() + ".err.exr";
@@ -487,6 +506,20 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
                 {{"helpers", "Kulla-Conty f_ms and F_ms over E" + suffix + " and Eavg" + suffix}}));
       });
       summary["helpers"].push_back(path);
+    }
+    // --shader: lutbake.<ext> per language, committed with the tables.
+    for (const std::string &name : SplitList(o.shaders)) {
+      ShaderLanguage language = ShaderLanguage::kGlsl;
+      ParseShaderLanguage(name, &language);  // checked by ListOf
+      const std::string path =
+          (std::filesystem::path(o.outDir) / (std::string("lutbake") + ShaderExtension(language)))
+              .string();
+      output.Write(path, [&](const std::string &temporary) {
+        WriteShaderCode(temporary, language, shapes,
+                        functionHeaderMetadata({{"shader", std::string(ToString(language)) +
+                                                               " functions of the baked tables"}}));
+      });
+      summary["shaders"].push_back(path);
     }
     if (!unreached.empty()) {
       std::cerr << "lutbake bake: --tolerance " << settings.tolerance << " not reached within "

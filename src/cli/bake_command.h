@@ -28,6 +28,7 @@ struct BakeOptions {
   std::string headerNamespace = "lutbake_luts";
   std::string headerType = "float";
   std::string binType = "float";
+  std::string shaders;  // --shader glsl,hlsl,wgsl,msl: lutbake.<ext> beside the tables
   bool json = false;
   SceneOptions scene;  // --scene / --manifest: bake a plan
   bool skipUnsupported = false;

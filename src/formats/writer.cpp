@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "lutbake/formats/source_formats.h"
+
 namespace lutbake {
 
 std::unique_ptr<TableWriter> MakeWriter(const std::string &formatName) {
@@ -15,6 +17,19 @@ std::unique_ptr<TableWriter> MakeWriter(const std::string &formatName) {
   if (formatName == "dds") return MakeDdsWriter(ValueType::kFloat32);
   if (formatName == "dds-half") return MakeDdsWriter(ValueType::kHalf);
   if (formatName == "c-array") return MakeCArrayWriter();
+  // Source embeddings (source_formats.h).
+  if (formatName == "inc") return MakeIncWriter(ValueType::kFloat32);
+  if (formatName == "inc-half") return MakeIncWriter(ValueType::kHalf);
+  for (const bool ts : {false, true}) {
+    const std::string stem = ts ? "ts" : "js";
+    if (formatName == stem) return MakeJsWriter(ValueType::kFloat32, ts);
+    if (formatName == stem + "-half") return MakeJsWriter(ValueType::kHalf, ts);
+  }
+  ShaderLanguage language;
+  const size_t dash = formatName.rfind("-array");
+  if (dash != std::string::npos && dash + 6 == formatName.size() &&
+      ParseShaderLanguage(formatName.substr(0, dash), &language))
+    return MakeShaderArrayWriter(language);
   return nullptr;
 }
 

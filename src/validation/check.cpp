@@ -135,7 +135,7 @@ class Checker {
     if (tables_.empty()) {
       Add(dir_, "tables", CheckStatus::kFail,
           "no table files (" + TableNameList() +
-              " as .exr, .bin, .h, .ktx2, .dds or .png) found in " + dir_);
+              " as .exr, .bin, .h, .ktx2, .dds, .png or a source embedding) found in " + dir_);
     } else {
       ComputeReferences();
       for (auto &[index, t] : tables_) {
@@ -221,7 +221,16 @@ class Checker {
     attempt(ktx2Path, [&] { ktx2 = ReadKtx2Table(ktx2Path); });
     attempt(ddsPath, [&] { dds = ReadDdsTable(ddsPath); });
     attempt(pngPath, [&] { png = ReadPngTable(pngPath); });
-    const bool present = exr || bin || header || ktx2 || dds || png || !problems.empty();
+    // The source embeddings (source_formats.h), float32 or half.
+    std::vector<std::pair<std::string, std::optional<Table>>> sources;
+    for (const char *extension : {".inc", ".js", ".ts", ".glsl", ".hlsl", ".wgsl", ".metal"}) {
+      const std::string path = base.string() + extension;
+      std::optional<Table> source;
+      attempt(path, [&] { source = ReadSourceTable(path); });
+      if (source) sources.emplace_back(path, std::move(source));
+    }
+    const bool present =
+        exr || bin || header || ktx2 || dds || png || !sources.empty() || !problems.empty();
     if (!present) return;
     Loaded &t = tables_[index];
     t.def = &def;
@@ -253,6 +262,15 @@ class Checker {
             hPath + ": its comment lacks axisX / axisY matching kWidth and kHeight");
         return;
       }
+    } else if (!ktx2 && !dds && !png && !sources.empty()) {
+      // Only source embeddings: a float32 one if there is one.
+      const auto chosen = std::find_if(sources.begin(), sources.end(), [](const auto &f) {
+        return *f.second->FindMetadata("errorStorage") == "float32";
+      });
+      const auto &[path, file] = chosen != sources.end() ? *chosen : sources.front();
+      t.table = *file;
+      t.primary = path;
+      t.storageError = *file->FindMetadata("errorStorage") == "half" ? 0x1p-12 : 0.0;
     } else if (ktx2 || dds || png) {
       // The GPU texture files, the most precise first; their metadata
       // (errorStorage) makes errorMax cover their own storage.
@@ -306,7 +324,10 @@ class Checker {
       t.table.errors.assign(t.table.values.size(), t.statedErrorMax);
     }
     CheckFormats(t, exr, bin, header, err);
-    CheckTextureFormats(t, {{ktx2Path, ktx2}, {ddsPath, dds}, {pngPath, png}});
+    std::vector<std::pair<std::string, std::optional<Table>>> textures = {
+        {ktx2Path, ktx2}, {ddsPath, dds}, {pngPath, png}};
+    textures.insert(textures.end(), sources.begin(), sources.end());
+    CheckTextureFormats(t, textures);
     t.usable = true;
   }
 
@@ -1381,8 +1402,9 @@ CheckReport CheckBakedSet(const std::string &dir, const CheckOptions &options) {
             [](const std::string &a, const std::string &b) { return a.size() > b.size(); });
   std::string alternatives;
   for (const std::string &n : names) alternatives += (alternatives.empty() ? "" : "|") + n;
-  const std::regex kTableFile("^(" + alternatives +
-                              R"()(_[A-Za-z0-9_]+)?(\.err)?\.(exr|bin|h|png|ktx2|dds)$)");
+  const std::regex kTableFile(
+      "^(" + alternatives +
+      R"()(_[A-Za-z0-9_]+)?(\.err)?\.(exr|bin|h|png|ktx2|dds|inc|js|ts|glsl|hlsl|wgsl|metal)$)");
   std::set<std::string> suffixes;
   for (const auto &entry : fs::directory_iterator(dir, ec)) {
     std::smatch m;

@@ -33,6 +33,12 @@ Table ReadPngTable(const std::string &path);
 Table ReadKtx2Table(const std::string &path);
 Table ReadDdsTable(const std::string &path);
 
+// The source embeddings (source_formats.h: T.inc, T.js, T.ts, T.glsl,
+// T.hlsl, T.wgsl, T.metal): the metadata of their opening comment, and the
+// literals between "// lutbake-values-begin" and "// lutbake-values-end",
+// float32 or binary16 bit patterns as errorStorage says, widened.
+Table ReadSourceTable(const std::string &path);
+
 // The storage of a generated header: its sizes, kValues as written (float,
 // or half bit patterns decoded), and
 // the metadata repeated in its opening comment ("//   key: value" lines).
