@@ -1,0 +1,147 @@
+#!/usr/bin/python3
+"""Each engine's own shipped table against lutbake's exact values in the engine's layout:
+max and RMS difference, and where the max is (README "Engine presets").
+
+Usage:
+    /usr/bin/python3 scripts/measure_peer_presets.py PEER_DIR LUTBAKE
+
+PEER_DIR holds the peers' tables as CSV (extracted from each project's source, conventions in
+each file's comments; not bundled except the four under tests/data/presets/):
+  cycles_table_ggx_E.csv          Blender Cycles table_ggx_E (tests/data/presets/)
+  threejs_dfg_lut_16x16.csv       three.js DFGLUTData.js, current (tests/data/presets/)
+  threejs_dfg_lut_32x32.csv       three.js DFGLUTData.js, r181 (tests/data/presets/)
+  filament_dfg_64x64.csv          Filament v1.19.0 dfg.inc, mobile size (tests/data/presets/)
+  ibl_brdf_lut_png_website_copy.csv  LearnOpenGL's website ibl_brdf_lut.png (8-bit, 256^2)
+  lut_sheen_E_current_1024x1024.csv  glTF Sample Renderer assets/images/lut_sheen_E.png
+A missing file is reported and skipped. Exact values come from LUTBAKE: `eval` (dfg, sheen_E)
+and `furnace` (Schlick-GGX, which eval has no table for) at the peer's own texel coordinates.
+Needs numpy.
+"""
+import csv
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+
+def rows(path):
+    with open(path) as f:
+        return list(csv.DictReader(line for line in f if not line.startswith("#")))
+
+
+def run_json_lines(cmd):
+    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
+    return [json.loads(line) for line in out.splitlines() if line.strip().startswith("{")]
+
+
+def eval_points(lutbake, table, mus, rs, extra=()):
+    """lutbake eval on the grid mus x rs: {(mu, r): value or [A, B]}."""
+    out = {}
+    for k in range(0, len(rs), 64):
+        chunk = rs[k:k + 64]
+        cmd = [lutbake, "eval", "--table", table, "--mu", ",".join(repr(m) for m in mus),
+               "--roughness", ",".join(repr(r) for r in chunk), "--json", *extra]
+        for p in run_json_lines(cmd):
+            out[(round(p["mu"], 12), round(p["roughness"], 12))] = p["value"]
+    return out
+
+
+def report(name, diffs, where):
+    d = np.abs(np.asarray(diffs))
+    k = int(np.argmax(d))
+    print(f"| {name} | {d.max():.2e} | {np.sqrt(np.mean(d * d)):.2e} | {where[k]} |")
+
+
+def main():
+    peer, lutbake = sys.argv[1], sys.argv[2]
+    print("| peer table, in its own layout | max difference | RMS | where the max is |")
+    print("|---|---|---|---|")
+    path = os.path.join(peer, "cycles_table_ggx_E.csv")
+    if os.path.exists(path):
+        r = rows(path)
+        mus = sorted({float(x["mu"]) for x in r})
+        rs = sorted({float(x["roughness"]) for x in r})
+        ev = eval_points(lutbake, "E", mus, rs)
+        diffs, where = [], []
+        for x in r:
+            v = ev[(round(float(x["mu"]), 12), round(float(x["roughness"]), 12))]
+            diffs.append(float(x["cycles_E"]) - (v if not isinstance(v, list) else v[0]))
+            where.append(f"mu {float(x['mu']):.4g}, rough {float(x['roughness']):.4g}")
+        report("Cycles table_ggx_E 32x32 (E)", diffs, where)
+    for size, name in ((16, "threejs_dfg_lut_16x16.csv"), (32, "threejs_dfg_lut_32x32.csv")):
+        path = os.path.join(peer, name)
+        if not os.path.exists(path):
+            print(f"| three.js {size}x{size}: {name} missing | | | |")
+            continue
+        r = rows(path)
+        muk, rk = ("v_NdotV", "u_roughness") if size == 16 else ("NdotV", "roughness")
+        ak, bk = ("R_A_scale", "G_B_bias") if size == 16 else ("three_scale_A", "three_bias_B")
+        mus = sorted({float(x[muk]) for x in r})
+        rs = sorted({float(x[rk]) for x in r})
+        ev = eval_points(lutbake, "dfg", mus, rs)
+        for c, key in enumerate((ak, bk)):
+            diffs = [float(x[key]) - ev[(round(float(x[muk]), 12), round(float(x[rk]), 12))][c]
+                     for x in r]
+            where = [f"NdotV {float(x[muk]):.4g}, roughness {float(x[rk]):.4g}" for x in r]
+            report(f"three.js {size}x{size} ({'AB'[c]})", diffs, where)
+    path = os.path.join(peer, "filament_dfg_64x64.csv")
+    if os.path.exists(path):
+        r = rows(path)
+        mus = sorted({float(x["u"]) for x in r})
+        rs = sorted({float(x["v"]) for x in r})
+        ev = eval_points(lutbake, "dfg", mus, rs)
+        sh = eval_points(lutbake, "sheen_E", mus, rs,
+                         ("--sheen-visibility", "ashikhmin", "--sheen-alpha", "squared"))
+        for label, key, f in (("B", "R_B", lambda a: a[1]), ("E", "G_E", lambda a: a[0] + a[1])):
+            diffs = [float(x[key]) - f(ev[(round(float(x["u"]), 12), round(float(x["v"]), 12))])
+                     for x in r]
+            where = [f"NoV {float(x['u']):.4g}, r {float(x['v']):.4g}" for x in r]
+            report(f"Filament dfg.inc 64x64 v1.19.0 ({label}, rows as the shader samples them)",
+                   diffs, where)
+        diffs = [float(x["B_sheenE_ashikhmin"]) -
+                 sh[(round(float(x["u"]), 12), round(float(x["v"]), 12))] for x in r]
+        where = [f"NoV {float(x['u']):.4g}, r {float(x['v']):.4g}" for x in r]
+        report("Filament dfg.inc 64x64 v1.19.0 (cloth)", diffs, where)
+    path = os.path.join(peer, "ibl_brdf_lut_png_website_copy.csv")
+    if os.path.exists(path):
+        r = [x for x in rows(path) if int(x["i"]) % 8 == 3 and int(x["j"]) % 8 == 3]
+        mus = sorted({float(x["NoV"]) for x in r})
+        rs = sorted({float(x["roughness"]) for x in r})
+        vals = {}
+        for f0 in (0, 1):
+            for p in json.loads(subprocess.run(
+                    [lutbake, "furnace", "--model", "microfacet", "--smith", "schlick-ggx-ibl",
+                     "--f0", str(f0), "--parameter", ",".join(repr(x) for x in rs),
+                     "--mu", ",".join(repr(x) for x in mus), "--json"],
+                    check=True, capture_output=True, text=True).stdout)["albedo"]:
+                vals[(f0, round(p["mu"], 12), round(p["parameter"], 12))] = p["value"]
+        for c, key in enumerate(("R_A", "G_B")):
+            diffs, where = [], []
+            for x in r:
+                mu, rr = round(float(x["NoV"]), 12), round(float(x["roughness"]), 12)
+                b, e = vals[(0, mu, rr)], vals[(1, mu, rr)]
+                diffs.append(float(x[key]) - (e - b if c == 0 else b))
+                where.append(f"NdotV {mu:.4g}, roughness {rr:.4g}")
+            report(f"LearnOpenGL website ibl_brdf_lut.png 256x256 8-bit, every 8th texel "
+                   f"({'AB'[c]})", diffs, where)
+    path = os.path.join(peer, "lut_sheen_E_current_1024x1024.csv")
+    if os.path.exists(path):
+        r = [x for x in rows(path) if int(x["i"]) % 16 == 7 and int(x["j"]) % 16 == 7]
+        mus = sorted({float(x["u_NdotV"]) for x in r})
+        rs = sorted({float(x["v_sheenRoughness"]) for x in r})
+        sh = eval_points(lutbake, "sheen_E", mus, rs, ("--sheen-alpha", "squared"))
+        for label, key in (("as the shader reads it", "as_sampled_u8"),
+                           ("sRGB-decoded", "linear_decoded")):
+            diffs = [float(x[key]) - min(1.0, sh[(round(float(x["u_NdotV"]), 12),
+                                                  round(float(x["v_sheenRoughness"]), 12))])
+                     for x in r]
+            where = [f"NdotV {float(x['u_NdotV']):.4g}, r {float(x['v_sheenRoughness']):.4g}"
+                     for x in r]
+            report(f"glTF Sample Renderer lut_sheen_E.png, every 16th texel ({label})", diffs,
+                   where)
+
+
+if __name__ == "__main__":
+    main()
