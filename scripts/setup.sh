@@ -12,6 +12,11 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   libopenexr-dev libimath-dev libopenimageio-dev openimageio-tools \
   libtbb-dev libhwy-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev zlib1g-dev \
   >/dev/null
+# The shader tests (tests/formats/shader_code_test.cpp, browser_furnace_test.cpp):
+# glslangValidator compiles the emitted GLSL and HLSL to SPIR-V, spirv-val
+# validates it; headless Chromium compiles the WGSL with Tint (WebGPU on its
+# bundled SwiftShader Vulkan) and renders the WebGL2 furnace (SwiftShader GL).
+$SUDO apt-get install -y -qq --no-install-recommends glslang-tools spirv-tools chromium >/dev/null
 # nodejs and npm: the KTX2 test parses lutbake's .ktx2 files with the npm
 # package ktx-parse, which it installs under build/npm on first use. Debian's
 # packages unless a node and npm are already there (a NodeSource node 20

@@ -1,0 +1,423 @@
+// The emitted shader code (--shader, lutbake.<ext>) and the constant-array
+// embeddings (--format *-array, T.<ext>) compiled by real compilers:
+//   GLSL  glslangValidator: GLSL 4.50 to SPIR-V (then spirv-val), and GLSL ES
+//         3.00 (WebGL2) validated;
+//   HLSL  glslangValidator -D: HLSL to SPIR-V (then spirv-val);
+//   WGSL  Tint, Chromium's WebGPU compiler: createShaderModule and
+//         getCompilationInfo in headless Chromium on SwiftShader's Vulkan
+//         (Tint's whole front end: parsing, resolution, types, uniformity; a
+//         render pipeline is not built: on SwiftShader it did not finish
+//         within the headless run);
+//   MSL   no Metal compiler runs on Linux: compiled as C++17 by clang++
+//         against tests/formats/metal_shim/metal_stdlib (what that checks
+//         and what it cannot is said there) and run: its lookups against
+//         the library's Lookup at texel centres, half-way points and random
+//         points.
+// Each shader has an entry point that calls every emitted function, so that
+// none is left out of the SPIR-V. A test skips (and says why) only when its
+// tool is not installed; scripts/setup.sh installs glslang-tools,
+// spirv-tools and chromium.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+
+#include "lutbake/formats/source_formats.h"
+#include "lutbake/tables/lookup.h"
+#include "support/small_tables.h"
+
+namespace lutbake {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string RunCommand(const std::string &command, int *status) {
+  std::string out;
+  FILE *pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return out;
+  char buffer[4096];
+  for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
+  *status = ::pclose(pipe);
+  return out;
+}
+
+bool Have(const char *tool) {
+  return std::system(("command -v " + std::string(tool) + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+std::string ReadText(const fs::path &path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Every kind of table a set holds: 1D (Eavg), 2D with one and two channels
+// (E, dfg, f82, sheen_E), 3D (glass_E, three eta slices), and a listed
+// roughness axis (a bake plan's E).
+const std::vector<Table> &Tables() {
+  static const std::vector<Table> tables = [] {
+    std::vector<Table> t;
+    for (const char *name : {"E", "Eavg", "dfg", "f82", "sheen_E"})
+      t.push_back(test::SmallTableOf(TableNamed(name)));
+    BakeSettings s;
+    s.size = 4;
+    s.depthSize = 3;
+    s.samples = 64;
+    s.commandLine = "lutbake bake --test";
+    t.push_back(BakeTable(TableNamed("glass_E"), s));
+    Table listed = test::SmallTableOf(TableNamed("E"));
+    listed.name = "E_listed";
+    listed.y = ListedAxis("perceptualRoughness", {0.1, 0.35, 0.9});
+    listed.values.resize(static_cast<size_t>(listed.width()) * 3);
+    for (size_t i = 0; i < listed.values.size(); ++i)
+      listed.values[i] = 0.5 + 0.4 * std::sin(0.7 * static_cast<double>(i));
+    listed.errors.assign(listed.values.size(), 1e-7);
+    for (auto &[key, value] : listed.metadata)
+      if (key == "axisY") value = DescribeAxis(listed.y);
+    t.push_back(listed);
+    return t;
+  }();
+  return tables;
+}
+
+// The emitted code of one language: the arrays of every table, then
+// lutbake.<ext>.
+std::string EmittedCode(ShaderLanguage language, const fs::path &dir) {
+  std::string code;
+  for (const Table &t : Tables()) {
+    const fs::path path = dir / (t.Name() + ShaderExtension(language));
+    MakeShaderArrayWriter(language)->Write(t, path.string(), {});
+    code += ReadText(path);
+  }
+  const fs::path path = dir / (std::string("lutbake") + ShaderExtension(language));
+  WriteShaderCode(path.string(), language, Tables(), {{"commandLine", "lutbake bake --test"}});
+  return code + ReadText(path);
+}
+
+// Calls of every emitted function, each adding its first component to
+// `acc`, in the language's syntax; texture i is t<i> (and t<i>_sampler).
+std::string Calls(ShaderLanguage language) {
+  const bool wgsl = language == ShaderLanguage::kWgsl;
+  const auto vec = [&](int n, const std::string &v) {
+    switch (language) {
+      case ShaderLanguage::kGlsl: return "vec" + std::to_string(n) + "(" + v + ")";
+      case ShaderLanguage::kWgsl: return "vec" + std::to_string(n) + "<f32>(" + v + ")";
+      default: return "float" + std::to_string(n) + "(" + v + ")";
+    }
+  };
+  const auto lit = [&](const char *v) {
+    return language == ShaderLanguage::kHlsl || language == ShaderLanguage::kMsl
+               ? std::string(v) + "f"
+               : std::string(v);
+  };
+  const auto tex = [&](const std::string &name) {
+    return language == ShaderLanguage::kGlsl ? name : name + ", " + name + "_sampler";
+  };
+  std::string s;
+  const auto add = [&](const std::string &call, int channels) {
+    s += wgsl ? "  acc = acc + " : "  acc += ";
+    s += call + (channels > 1 ? ".x" : "") + ";\n";
+  };
+  int i = 0;
+  std::string E, Eavg;
+  for (const Table &t : Tables()) {
+    std::string coords;
+    for (size_t a = 0; a < 1u + t.is2D() + t.is3D(); ++a) coords += ", " + lit("0.37");
+    add("lutbake_sample_" + t.Name() + "(" + tex("t" + std::to_string(i)) + coords + ")",
+        t.channels);
+    add("lookup_" + t.Name() + "(" + coords.substr(2) + ")", t.channels);
+    if (t.Name() == "E") E = tex("t" + std::to_string(i));
+    if (t.Name() == "Eavg") Eavg = tex("t" + std::to_string(i));
+    ++i;
+  }
+  const std::string v2 = vec(2, lit("0.5") + ", " + lit("0.25")),
+                    one = vec(3, lit("1.0") + ", " + lit("1.0") + ", " + lit("1.0")),
+                    f0 = vec(3, lit("0.04") + ", " + lit("0.5") + ", " + lit("0.9"));
+  add("lutbake_specular_albedo(" + v2 + ", " + f0 + ", " + one + ")", 3);
+  add("lutbake_f82_tint_a(" + f0 + ", " + f0 + ")", 3);
+  add("lutbake_specular_albedo_f82(" + v2 + ", " + lit("0.01") + ", " + f0 + ", " + one + ", " +
+          f0 + ")",
+      3);
+  add("lutbake_f_ms(" + lit("0.9") + ", " + lit("0.8") + ", " + lit("0.85") + ")", 1);
+  add("lutbake_ms_albedo(" + lit("0.9") + ")", 1);
+  add("lutbake_fresnel_ms(" + f0 + ", " + lit("0.85") + ")", 3);
+  add("lutbake_favg_schlick(" + f0 + ", " + one + ")", 3);
+  add("lutbake_f_ms_E(" + E + ", " + Eavg + ", " + lit("0.3") + ", " + lit("0.6") + ", " +
+          lit("0.5") + ")",
+      1);
+  add("lutbake_sheen_albedo_scaling(" + f0 + ", " + lit("0.3") + ")", 1);
+  add("lutbake_sheen_albedo_scaling2(" + f0 + ", " + lit("0.3") + ", " + lit("0.4") + ")", 1);
+  return s;
+}
+
+size_t TextureCount() { return Tables().size(); }
+
+// A float32 printed to round-trip, always with a '.' or an exponent.
+std::string FloatText(double v) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.9g", static_cast<double>(static_cast<float>(v)));
+  const std::string s = text;
+  return s.find_first_of(".e") == std::string::npos ? s + ".0" : s;
+}
+
+TEST(ShaderCode, EmitsOnlyTheFunctionsOfTheBakedTables) {
+  const fs::path dir = test::FormatTempDir("shader_only");
+  const std::vector<Table> justE = {Tables()[0]};
+  WriteShaderCode((dir / "a.glsl").string(), ShaderLanguage::kGlsl, justE, {});
+  const std::string a = ReadText(dir / "a.glsl");
+  EXPECT_NE(a.find("float lutbake_sample_E("), std::string::npos);
+  for (const char *absent : {"lutbake_f_ms", "lutbake_specular_albedo", "lutbake_sheen", "f82"})
+    EXPECT_EQ(a.find(absent), std::string::npos) << absent;
+  // dfg without f82: the split sum, no F82 term.
+  WriteShaderCode((dir / "b.glsl").string(), ShaderLanguage::kGlsl, {Tables()[2]}, {});
+  const std::string b = ReadText(dir / "b.glsl");
+  EXPECT_NE(b.find("vec3 lutbake_specular_albedo("), std::string::npos);
+  EXPECT_EQ(b.find("lutbake_specular_albedo_f82"), std::string::npos);
+  // The texel-centre convention on a linear axis: u = (mu - 0) / (1 - 0),
+  // clamped to the first and last centres of 6 texels.
+  EXPECT_NE(b.find("clamp((mu - 0.0) * 1.0, 0.0833333358, 0.916666687)"), std::string::npos) << b;
+}
+
+TEST(ShaderCode, GlslCompilesToValidSpirvAndAsGlslEs300) {
+  if (!Have("glslangValidator") || !Have("spirv-val"))
+    GTEST_SKIP() << "glslangValidator or spirv-val not found (scripts/setup.sh installs "
+                    "glslang-tools and spirv-tools)";
+  const fs::path dir = test::FormatTempDir("shader_glsl");
+  const std::string code = EmittedCode(ShaderLanguage::kGlsl, dir);
+  std::string uniforms450, uniforms300;
+  for (size_t i = 0; i < TextureCount(); ++i) {
+    uniforms450 += "layout(binding = " + std::to_string(i) + ") uniform sampler2D t" +
+                   std::to_string(i) + ";\n";
+    uniforms300 += "uniform highp sampler2D t" + std::to_string(i) + ";\n";
+  }
+  const std::string body = "void main() {\n  float acc = 0.0;\n" + Calls(ShaderLanguage::kGlsl) +
+                           "  color = vec4(acc);\n}\n";
+  std::ofstream(dir / "test450.frag")
+      << "#version 450\n"
+      << code << uniforms450 << "layout(location = 0) out vec4 color;\n"
+      << body;
+  std::ofstream(dir / "test300.frag") << "#version 300 es\nprecision highp float;\n"
+                                      << code << uniforms300 << "out vec4 color;\n"
+                                      << body;
+  int status = 0;
+  std::string out = RunCommand("glslangValidator -V '" + (dir / "test450.frag").string() +
+                                   "' -o '" + (dir / "glsl.spv").string() + "' 2>&1",
+                               &status);
+  ASSERT_EQ(status, 0) << out;
+  out = RunCommand("spirv-val '" + (dir / "glsl.spv").string() + "' 2>&1", &status);
+  EXPECT_EQ(status, 0) << out;
+  out = RunCommand("glslangValidator '" + (dir / "test300.frag").string() + "' 2>&1", &status);
+  EXPECT_EQ(status, 0) << out;
+}
+
+TEST(ShaderCode, HlslCompilesToValidSpirv) {
+  if (!Have("glslangValidator") || !Have("spirv-val"))
+    GTEST_SKIP() << "glslangValidator or spirv-val not found (scripts/setup.sh installs "
+                    "glslang-tools and spirv-tools)";
+  const fs::path dir = test::FormatTempDir("shader_hlsl");
+  std::string resources;
+  for (size_t i = 0; i < TextureCount(); ++i) {
+    const std::string n = std::to_string(i);
+    resources += "Texture2D<float4> t" + n + " : register(t" + n + ");\nSamplerState t" + n +
+                 "_sampler : register(s" + n + ");\n";
+  }
+  std::ofstream(dir / "test.hlsl")
+      << EmittedCode(ShaderLanguage::kHlsl, dir) << resources
+      << "float4 main() : SV_Target {\n  float acc = 0.0f;\n"
+      << Calls(ShaderLanguage::kHlsl) << "  return float4(acc, acc, acc, acc);\n}\n";
+  int status = 0;
+  std::string out =
+      RunCommand("glslangValidator -D -V -S frag -e main '" + (dir / "test.hlsl").string() +
+                     "' -o '" + (dir / "hlsl.spv").string() + "' 2>&1",
+                 &status);
+  ASSERT_EQ(status, 0) << out;
+  out = RunCommand("spirv-val '" + (dir / "hlsl.spv").string() + "' 2>&1", &status);
+  EXPECT_EQ(status, 0) << out;
+}
+
+// Headless Chromium with WebGPU on SwiftShader's Vulkan (the driver Chromium
+// ships): Tint compiles the module; its messages and any validation error
+// come back on the console.
+TEST(ShaderCode, WgslCompilesWithTint) {
+  if (!Have("chromium"))
+    GTEST_SKIP() << "chromium not found: WGSL is not compiled here (scripts/setup.sh installs "
+                    "chromium)";
+  const fs::path dir = test::FormatTempDir("shader_wgsl");
+  std::string resources;
+  for (size_t i = 0; i < TextureCount(); ++i) {
+    const std::string n = std::to_string(i);
+    resources += "@group(0) @binding(" + std::to_string(2 * i) + ") var t" + n +
+                 ": texture_2d<f32>;\n@group(0) @binding(" + std::to_string(2 * i + 1) + ") var t" +
+                 n + "_sampler: sampler;\n";
+  }
+  const std::string wgsl =
+      EmittedCode(ShaderLanguage::kWgsl, dir) + resources +
+      "@vertex fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) "
+      "vec4<f32> {\n  return vec4<f32>(f32(i), 0.0, 0.0, 1.0);\n}\n"
+      "@fragment fn fs() -> @location(0) vec4<f32> {\n  var acc: f32 = 0.0;\n" +
+      Calls(ShaderLanguage::kWgsl) + "  return vec4<f32>(acc);\n}\n";
+  std::ofstream(dir / "test.wgsl") << wgsl;
+  // The good module, and one with a type error that Tint must report.
+  const nlohmann::json sources = {wgsl, "fn broken() -> f32 { return 1u; }\n"};
+  std::ofstream(dir / "page.html")
+      << "<!doctype html><script>\nconst sources = " << sources.dump() << ";\n"
+      << R"((async () => {
+  const out = { adapter: false, modules: [] };
+  try {
+    const adapter = await navigator.gpu.requestAdapter();
+    out.adapter = !!adapter;
+    const device = await adapter.requestDevice();
+    for (const code of sources) {
+      device.pushErrorScope('validation');
+      const module = device.createShaderModule({ code });
+      const info = await module.getCompilationInfo();
+      const entry = { messages: info.messages.map(m => `${m.type} ${m.lineNum}:${m.linePos} ${m.message}`) };
+      const error = await device.popErrorScope();
+      entry.error = error ? error.message : null;
+      out.modules.push(entry);
+    }
+  } catch (e) { out.exception = String(e); }
+  console.log('LUTBAKE_WGSL ' + JSON.stringify(out));
+})();
+</script>)";
+  // --dump-dom ends the run when the page looks idle, which can come before
+  // the WebGPU / WebGL promises settle (seen once in a few runs): up to three
+  // runs, each in a fresh profile, until the page's line is there.
+  std::string out;
+  for (int run = 0; run < 3 && out.find("LUTBAKE_WGSL ") == std::string::npos; ++run) {
+    int status = 0;
+    out = RunCommand(
+        "VK_ICD_FILENAMES=/usr/lib/chromium/vk_swiftshader_icd.json timeout 120 chromium "
+        "--headless=new --no-sandbox --no-first-run --disable-extensions "
+        "--disable-background-networking --user-data-dir='" +
+            (dir / ("profile" + std::to_string(run))).string() +
+            "' --enable-unsafe-webgpu --enable-features=Vulkan --use-vulkan=swiftshader "
+            "--use-webgpu-adapter=swiftshader --enable-logging=stderr --v=0 "
+            "--virtual-time-budget=60000 --dump-dom 'file://" +
+            (dir / "page.html").string() + "' 2>&1 >/dev/null",
+        &status);
+  }
+  const size_t at = out.find("LUTBAKE_WGSL ");
+  ASSERT_NE(at, std::string::npos) << out.substr(0, 4000);
+  const size_t end = out.find("\", source:", at);
+  const nlohmann::json result = nlohmann::json::parse(out.substr(at + 13, end - at - 13));
+  ASSERT_EQ(result["adapter"], true) << result.dump(1);
+  ASSERT_EQ(result["modules"].size(), 2u) << result.dump(1);
+  EXPECT_EQ(result["modules"][0]["messages"].size(), 0u) << result.dump(1);
+  EXPECT_TRUE(result["modules"][0]["error"].is_null()) << result.dump(1);
+  // The broken one: Tint's message, so a compiler that accepts anything fails here.
+  ASSERT_EQ(result["modules"][1]["messages"].size(), 1u) << result.dump(1);
+  EXPECT_NE(result["modules"][1]["messages"][0].get<std::string>().find("return"),
+            std::string::npos)
+      << result.dump(1);
+}
+
+// The Metal code as C++ on the CPU (metal_shim/metal_stdlib): both the array
+// lookup_T and the texture lookup lutbake_sample_T against the library's
+// Lookup (the C++ header's convention) at every texel centre, half-way
+// between centres and at random points, in and beyond the axis range.
+// float32 arithmetic: 2e-6 allowed. A half-texel error moves values by half
+// a texel step, over 1e-3 here.
+TEST(ShaderCode, MetalCompilesAsCppAndLooksUpAsTheLibrary) {
+  const char *compiler = LUTBAKE_TEST_CLANGXX;
+  if (std::string(compiler).find("NOTFOUND") != std::string::npos) compiler = LUTBAKE_TEST_CXX;
+  const fs::path dir = test::FormatTempDir("shader_msl");
+  std::ostringstream main;
+  main << EmittedCode(ShaderLanguage::kMsl, dir) << "#include <cstdio>\n"
+       << "int main() {\n  float acc = 0.0f;\n";
+  std::mt19937 random(7);
+  std::vector<std::vector<double>> points;  // per call: table index, coordinates
+  size_t index = 0;
+  for (const Table &t : Tables()) {
+    const std::string n = std::to_string(index);
+    main << "  texture2d<float> t" << n << ";\n  t" << n << ".width = " << t.width() << ";\n  t"
+         << n << ".height = " << t.height() * t.depth() << ";\n  t" << n << ".texels = {";
+    for (size_t i = 0; i < t.texelCount(); ++i)
+      for (int c = 0; c < 4; ++c)
+        main << FloatText(c < t.channels ? t.values[i * t.channels + c] : 0.0) << "f, ";
+    main << "};\n  sampler t" << n << "_sampler;\n";
+    const Axis *axes[3] = {&t.x, &t.y, &t.z};
+    const int dims = 1 + t.is2D() + t.is3D();
+    // Centres and half-way points on each axis, then random points.
+    std::vector<std::vector<double>> perAxis(static_cast<size_t>(dims));
+    for (int a = 0; a < dims; ++a) {
+      const Axis &axis = *axes[a];
+      for (int i = 0; i < axis.count; ++i) {
+        perAxis[a].push_back(axis.TexelCenter(i));
+        if (i + 1 < axis.count)
+          perAxis[a].push_back(0.5 * (axis.TexelCenter(i) + axis.TexelCenter(i + 1)));
+      }
+    }
+    std::vector<std::vector<double>> mine;
+    for (double x : perAxis[0])
+      for (double y : dims > 1 ? perAxis[1] : std::vector<double>{0.0})
+        for (double z : dims > 2 ? perAxis[2] : std::vector<double>{0.0}) mine.push_back({x, y, z});
+    for (int k = 0; k < 64; ++k) {
+      std::vector<double> p;
+      for (int a = 0; a < 3; ++a) {
+        const double span = axes[a]->max - axes[a]->min;
+        p.push_back(axes[a]->min - 0.1 * span +
+                    1.2 * span * std::uniform_real_distribution<double>(0, 1)(random));
+      }
+      mine.push_back(p);
+    }
+    for (const std::vector<double> &p : mine) {
+      std::string args;
+      for (int a = 0; a < dims; ++a) {
+        args += std::string(a ? ", " : "") + FloatText(p[a]) + "f";
+      }
+      for (const char *kind : {"lookup", "sample"}) {
+        const std::string call =
+            std::string(kind) == "lookup"
+                ? "lookup_" + t.Name() + "(" + args + ")"
+                : "lutbake_sample_" + t.Name() + "(t" + n + ", t" + n + "_sampler, " + args + ")";
+        for (int c = 0; c < t.channels; ++c)
+          main << "  std::printf(\"%.9g\\n\", static_cast<double>(" << call
+               << (t.channels > 1 ? std::string(".") + "xy"[c] : std::string()) << "));\n";
+      }
+      std::vector<double> q = {static_cast<double>(index)};
+      for (int a = 0; a < 3; ++a) q.push_back(static_cast<float>(p[a]));
+      points.push_back(q);
+    }
+    ++index;
+  }
+  main << Calls(ShaderLanguage::kMsl)
+       << "  std::printf(\"acc %g\\n\", static_cast<double>(acc));\n}\n";
+  std::ofstream(dir / "main.cpp") << main.str();
+  int status = 0;
+  const std::string exe = (dir / "main").string();
+  std::string out = RunCommand(std::string(compiler) + " -std=c++17 -Wall -Wextra -Werror -I'" +
+                                   std::string(LUTBAKE_TEST_DATA) + "/../formats/metal_shim' '" +
+                                   (dir / "main.cpp").string() + "' -o '" + exe + "' 2>&1",
+                               &status);
+  ASSERT_EQ(status, 0) << out.substr(0, 6000);
+  out = RunCommand("'" + exe + "'", &status);
+  ASSERT_EQ(status, 0) << out;
+  std::istringstream lines(out);
+  double worst = 0.0;
+  for (const std::vector<double> &q : points) {
+    const Table &t = Tables()[static_cast<size_t>(q[0])];
+    for (int kind = 0; kind < 2; ++kind)
+      for (int c = 0; c < t.channels; ++c) {
+        double got = 0.0;
+        ASSERT_TRUE(lines >> got);
+        const double want =
+            t.is3D() ? Lookup(t, t.values, q[1], q[2], q[3], c) : Lookup(t, q[1], q[2], c);
+        worst = std::max(worst, std::abs(got - want));
+        ASSERT_NEAR(got, want, 2e-6) << t.Name() << (kind ? " sample" : " lookup") << " at ("
+                                     << q[1] << ", " << q[2] << ", " << q[3] << ") channel " << c;
+      }
+  }
+  std::string acc;
+  lines >> acc;
+  EXPECT_EQ(acc, "acc");
+  std::printf("MSL lookups: %zu points, worst |shader - library| %.3g\n", points.size(), worst);
+}
+
+}  // namespace
+}  // namespace lutbake
