@@ -12,6 +12,7 @@
 #include "cli_util.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/validation/check.h"
+#include "preset_command.h"
 
 namespace lutbake::cli {
 
@@ -63,6 +64,9 @@ int RunCheck(const CheckCommandOptions &o) {
   }
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
                                   static_cast<size_t>(ThreadCount(o.threads)));
+  // A preset's directory: its files against the preset (preset_command.h).
+  if (std::filesystem::exists(std::filesystem::path(o.dir) / "preset.json", ec))
+    return CheckPresetDirectory(o.dir, o.json);
   CheckOptions options;
   options.randomPoints = o.points;
   options.furnaceGrid = o.furnaceGrid;

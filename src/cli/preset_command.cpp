@@ -7,12 +7,15 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "cli_util.h"
 #include "interrupt.h"
 #include "lutbake/formats/atomic_output.h"
+#include "lutbake/formats/binary_format.h"
+#include "lutbake/formats/table_reader.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/presets/preset.h"
 #include "lutbake/tables/bake.h"
@@ -186,6 +189,98 @@ int RunPresetBake(const BakeOptions &o, const std::string &commandLine, CLI::App
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (o.json) std::cout << manifest.dump(2) << "\n";
   return 0;
+}
+
+namespace {
+
+// The reader of a preset's file, by its format.
+Table ReadPresetFile(const std::string &format, const std::string &path) {
+  if (format == "exr") return ReadExrTable(path);
+  if (format == "png8" || format == "png16") return ReadPngTable(path);
+  if (format == "ktx2" || format == "ktx2-half") return ReadKtx2Table(path);
+  if (format == "dds" || format == "dds-half") return ReadDdsTable(path);
+  return ReadSourceTable(path);  // inc, js, c-array, threejs-dfg, ...
+}
+
+}  // namespace
+
+int CheckPresetDirectory(const std::string &dir, bool json) {
+  const std::filesystem::path manifestPath = std::filesystem::path(dir) / "preset.json";
+  nlohmann::json manifest;
+  try {
+    std::ifstream in(manifestPath);
+    manifest = nlohmann::json::parse(in);
+  } catch (const std::exception &e) {
+    std::cerr << "lutbake check: " << manifestPath.string() << ": not JSON (" << e.what() << ")\n";
+    return 2;
+  }
+  const Preset *preset = manifest.contains("preset") && manifest["preset"].is_string()
+                             ? FindPreset(manifest["preset"].get<std::string>())
+                             : nullptr;
+  if (!preset || !manifest.contains("files") || !manifest["files"].is_array()) {
+    std::cerr << "lutbake check: " << manifestPath.string() << ": 'preset' must name one of "
+              << PresetNameList() << " and 'files' list its files\n";
+    return 2;
+  }
+  nlohmann::ordered_json report;
+  report["preset"] = preset->name;
+  report["files"] = nlohmann::ordered_json::array();
+  bool allPass = true;
+  for (const PresetTexture &texture : preset->textures) {
+    nlohmann::ordered_json entry;
+    entry["file"] = texture.file;
+    std::string problem;
+    double worst = 0.0, errorMax = 0.0;
+    const nlohmann::json *listed = nullptr;
+    for (const auto &f : manifest["files"])
+      if (f.contains("file") && f["file"] == texture.file) listed = &f;
+    try {
+      if (!listed || !(*listed).contains("errorMax") || !(*listed)["errorMax"].is_number())
+        throw IoError("not listed in preset.json with its errorMax");
+      errorMax = (*listed)["errorMax"].get<double>();
+      const Table stored =
+          ReadPresetFile(texture.format, (std::filesystem::path(dir) / texture.file).string());
+      const Table exact = BakePresetTexture(texture, preset->name);
+      if (stored.width() != exact.width() || stored.height() * stored.depth() != exact.height() ||
+          stored.values.size() != exact.values.size())
+        throw IoError("holds " + std::to_string(stored.width()) + " x " +
+                      std::to_string(stored.height()) + " x " + std::to_string(stored.channels) +
+                      " values; the preset has " + std::to_string(exact.width()) + " x " +
+                      std::to_string(exact.height()) + " x " + std::to_string(exact.channels));
+      // PNG and KTX2 keep two channels as RGB / RG: compare the ones both hold.
+      for (size_t i = 0; i < exact.values.size(); ++i) {
+        const double d = std::abs(stored.values[i] - exact.values[i]);
+        worst = std::max(worst, d);
+        if (!(d <= errorMax + exact.errors[i])) {
+          char text[200];
+          std::snprintf(text, sizeof text,
+                        "value %zu is %.9g, the integral %.9g: %.3g apart, more than errorMax "
+                        "%.3g + %.3g",
+                        i, stored.values[i], exact.values[i], d, errorMax, exact.errors[i]);
+          throw IoError(text);
+        }
+      }
+    } catch (const std::exception &e) {
+      problem = e.what();
+    }
+    entry["pass"] = problem.empty();
+    entry["worst"] = worst;
+    entry["errorMax"] = errorMax;
+    if (!problem.empty()) entry["problem"] = problem;
+    allPass = allPass && problem.empty();
+    if (!json) {
+      char line[400];
+      std::snprintf(line, sizeof line,
+                    "%-4s %-40s max |stored - integral| %.2e (errorMax %.2e)%s%s\n",
+                    problem.empty() ? "pass" : "FAIL", texture.file.c_str(), worst, errorMax,
+                    problem.empty() ? "" : ": ", problem.c_str());
+      std::cout << line;
+    }
+    report["files"].push_back(entry);
+  }
+  report["pass"] = allPass;
+  if (json) std::cout << report.dump(2) << "\n";
+  return allPass ? 0 : 1;
 }
 
 void SetupPresetsCommand(CLI::App &app, bool &json) {

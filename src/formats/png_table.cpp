@@ -33,7 +33,9 @@ namespace lutbake {
 namespace {
 
 std::string ChannelMapping(int channels) {
-  return channels == 1 ? "grey = channel 0 (Y)" : "R = channel 0, G = channel 1, B = 0 (unused)";
+  if (channels == 1) return "grey = channel 0 (Y)";
+  return channels == 2 ? "R = channel 0, G = channel 1, B = 0 (unused)"
+                       : "R = channel 0, G = channel 1, B = channel 2";
 }
 
 constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
@@ -209,9 +211,12 @@ Table ReadPngTable(const std::string &path) {
   if (!storage || *storage != expected)
     throw IoError(path + ": tEXt errorStorage is not " + expected + " for a " +
                   std::to_string(bits) + "-bit PNG");
-  table.channels = fileChannels == 1 ? 1 : 2;
-  table.channelNames =
-      table.channels == 1 ? std::vector<std::string>{"Y"} : std::vector<std::string>{"R", "G"};
+  // RGB holds two channels and an unused B, or three (channelMapping says which).
+  const std::string *mapping = table.FindMetadata("channelMapping");
+  table.channels = fileChannels == 1 ? 1 : mapping && *mapping == ChannelMapping(3) ? 3 : 2;
+  table.channelNames = table.channels == 1   ? std::vector<std::string>{"Y"}
+                       : table.channels == 2 ? std::vector<std::string>{"R", "G"}
+                                             : std::vector<std::string>{"R", "G", "B"};
   ShapeFromMetadata(path, width, height, &table);
   const int bytesPerPixel = fileChannels * bits / 8;
   const size_t rowBytes = static_cast<size_t>(width) * bytesPerPixel;

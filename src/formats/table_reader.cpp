@@ -52,7 +52,9 @@ void ShapeFromMetadata(const std::string &path, long width, long height, Table *
                                   : *name;
     table.definition = FindTable(plain);
   }
-  if (!table.definition)
+  // An engine preset's texture (lutbake/presets/preset.h) is no table
+  // definition's: its metadata names the preset instead.
+  if (!table.definition && !table.FindMetadata("preset"))
     throw IoError(path + ": attribute 'table' missing or not one of " + TableNameList());
 }
 

@@ -17,6 +17,7 @@ std::unique_ptr<TableWriter> MakeWriter(const std::string &formatName) {
   if (formatName == "dds") return MakeDdsWriter(ValueType::kFloat32);
   if (formatName == "dds-half") return MakeDdsWriter(ValueType::kHalf);
   if (formatName == "c-array") return MakeCArrayWriter();
+  if (formatName == "threejs-dfg") return MakeThreejsDfgWriter();
   // Source embeddings (source_formats.h).
   if (formatName == "inc") return MakeIncWriter(ValueType::kFloat32);
   if (formatName == "inc-half") return MakeIncWriter(ValueType::kHalf);

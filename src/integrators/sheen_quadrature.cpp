@@ -820,6 +820,7 @@ struct HalfVectorProblem {
   double vMin = 0.0;
   double logP = 0.0;  // log of the factor in front of the double integral
   double muScale = 1.0;
+  bool schlickWeight = false;  // weigh by (1 - o.h)^5 (the sheen's B)
 };
 
 HalfVectorProblem MakeHalfVectorProblem(SheenVisibility visibility, double alpha, double mu_o) {
@@ -872,7 +873,10 @@ Inner InnerIntegral(const HalfVectorProblem &h, double w, double absTolerance,
     const double mu_i = muAt(cosPhi);
     if (!(mu_i > 0.0)) return 0.0;
     const double oh = s_o * s * cosPhi + mu_o * c;
-    return h.muScale * oh / c * t.What(std::min(mu_i, 1.0));
+    const double value = h.muScale * oh / c * t.What(std::min(mu_i, 1.0));
+    if (!h.schlickWeight) return value;
+    const double y = 1.0 - std::min(oh, 1.0), y2 = y * y;
+    return value * (y2 * y2 * y);
   };
   std::vector<double> breaks{0.0};
   for (int k = 8; k >= 1; --k) breaks.push_back(std::ldexp(phiMax, -k) * 0.5);
@@ -899,8 +903,10 @@ Inner InnerIntegral(const HalfVectorProblem &h, double w, double absTolerance,
 
 }  // namespace
 
-SheenIntegral IntegrateSheenAlbedoAdaptive(SheenVisibility visibility, double alpha, double mu_o,
-                                           double tolerance) {
+namespace {
+
+SheenIntegral SheenAdaptive(SheenVisibility visibility, double alpha, double mu_o, double tolerance,
+                            bool schlickWeight) {
   CheckArguments(alpha, mu_o, tolerance);
   CheckFinite(visibility, alpha, mu_o);
   SheenIntegral result;
@@ -908,7 +914,8 @@ SheenIntegral IntegrateSheenAlbedoAdaptive(SheenVisibility visibility, double al
     result.exact = true;
     return result;
   }
-  const HalfVectorProblem h = MakeHalfVectorProblem(visibility, alpha, mu_o);
+  HalfVectorProblem h = MakeHalfVectorProblem(visibility, alpha, mu_o);
+  h.schlickWeight = schlickWeight;
   const double decay = 1.0 + 2.0 * alpha;
   // The double integral is at most pi (1 + s_o) / muScale' ... : with the
   // factors taken out, its integrand is at most (1 + s_o) (mu_o > 0) and
@@ -952,6 +959,18 @@ SheenIntegral IntegrateSheenAlbedoAdaptive(SheenVisibility visibility, double al
   result.value = Scaled(J, h.logP);
   result.bound = Scaled(errorJ, h.logP) + kBoundFloor * std::max(1.0, result.value);
   return result;
+}
+
+}  // namespace
+
+SheenIntegral IntegrateSheenAlbedoAdaptive(SheenVisibility visibility, double alpha, double mu_o,
+                                           double tolerance) {
+  return SheenAdaptive(visibility, alpha, mu_o, tolerance, false);
+}
+
+SheenIntegral IntegrateSheenSchlickWeightedAdaptive(SheenVisibility visibility, double alpha,
+                                                    double mu_o, double tolerance) {
+  return SheenAdaptive(visibility, alpha, mu_o, tolerance, true);
 }
 
 // E_avg by adaptive Gauss-Kronrod over mu, E at each node by the adaptive

@@ -12,6 +12,7 @@
 #include "lutbake/formats/writer.h"
 #include "lutbake/integrators/albedo_quadrature.h"
 #include "lutbake/integrators/gauss_legendre.h"
+#include "lutbake/integrators/sheen_quadrature.h"
 #include "lutbake/tables/table_definition.h"
 
 namespace lutbake {
@@ -68,7 +69,8 @@ ValueType PresetStorage(const PresetTexture &texture) {
 namespace {
 
 struct Needs {
-  bool splitSum = false, sheen = false, f82 = false, average = false, disney = false;
+  bool splitSum = false, sheen = false, sheenB = false, f82 = false, average = false;
+  bool disney = false;
 };
 
 Needs NeedsOf(const PresetTexture &texture) {
@@ -78,13 +80,15 @@ Needs NeedsOf(const PresetTexture &texture) {
       needs.splitSum = true;
     else if (c.meaning == "sheen_E")
       needs.sheen = true;
+    else if (c.meaning == "sheen_B")
+      needs.sheenB = true;
     else if (c.meaning == "f82")
       needs.f82 = true;
     else if (c.meaning == "Eavg")
       needs.average = true;
     else if (c.meaning == "disney_diffuse")
       needs.disney = true;
-    else if (c.meaning != "one" && c.meaning != "zero")
+    else if (c.meaning != "one" && c.meaning != "zero" && c.meaning != "fabric_lambert")
       throw std::invalid_argument("preset channel '" + c.meaning + "' is not known");
   }
   return needs;
@@ -216,7 +220,15 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
           mu = ma.Quantity(axisTexel(ma, index[muAxis]));
         }
         const double alpha = AlphaOf(model.alpha, roughness, model.alphaMin);
-        PointValue split, sheen, f82, average, disney;
+        PointValue split, sheen, sheenB, f82, average, disney;
+        if (needs.sheenB) {
+          const double sheenAlpha =
+              model.sheenAlpha == PresetAlpha::kSquared ? roughness * roughness : roughness;
+          const SheenIntegral b = IntegrateSheenSchlickWeightedAdaptive(
+              model.sheenVisibility, sheenAlpha, mu, kDefaultQuadratureTolerance);
+          sheenB.value[0] = b.value;
+          sheenB.error[0] = b.bound;
+        }
         if (needs.disney) disney = DisneyDiffuseAlbedo(mu, roughness);
         if (needs.splitSum) split = SplitSum(model, mu, alpha);
         if (needs.sheen) {
@@ -261,6 +273,12 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
           } else if (channel.meaning == "Eavg") {
             value = average.value[0];
             error = average.error[0];
+          } else if (channel.meaning == "sheen_B") {
+            value = sheenB.value[0];
+            error = sheenB.error[0];
+          } else if (channel.meaning == "fabric_lambert") {
+            // HDRP's FabricLambertNoPI: lerp(1, 1/2, alpha), alpha = roughness^2.
+            value = 1.0 - 0.5 * alpha;
           } else if (channel.meaning == "disney_diffuse") {
             value = disney.value[0];
             error = disney.error[0];

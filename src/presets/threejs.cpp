@@ -15,11 +15,11 @@ const Preset &ThreejsPreset() {
     p.name = "threejs";
     p.engine = "three.js";
     p.summary =
-        "DFGLUTData.js: 16 x 16 RG16F Uint16Array, x = roughness, y = NdotV (centres), R = A, "
-        "G = B";
+        "DFGLUTData.js: three.js's module (getDFGLUT), 16 x 16 RG16F, x = roughness, y = NdotV "
+        "(centres), R = A, G = B";
     PresetTexture t;
     t.file = "DFGLUTData.js";
-    t.format = "js-half";
+    t.format = "threejs-dfg";
     t.axes = {CentresAxis("roughness", 16), CentresAxis("mu", 16)};
     t.channels = {{"A"}, {"B"}};
     t.model.visibility = PresetVisibility::kCorrelated;

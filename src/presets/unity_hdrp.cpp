@@ -19,7 +19,8 @@ const Preset &UnityHdrpPreset() {
     p.engine = "Unity HDRP";
     p.summary =
         "PreIntegratedFGD_GGXDisneyDiffuse.exr: 64 x 64, x = sqrt(NdotV), y = "
-        "perceptualRoughness (edges), B, E, Disney diffuse - 0.5";
+        "perceptualRoughness (edges), B, E, Disney diffuse - 0.5; "
+        "PreIntegratedFGD_CharlieFabricLambert.exr: Charlie B / 2 pi, E / 2 pi, fabric Lambert";
     PresetTexture t;
     t.file = "PreIntegratedFGD_GGXDisneyDiffuse.exr";
     t.format = "exr";
@@ -40,8 +41,32 @@ const Preset &UnityHdrpPreset() {
         "preIntegratedFGD_GGXDisneyDiffuse.shader; ShaderLibrary/BSDF.hlsl (DisneyDiffuseNoPI)";
     t.notes =
         "float32 EXR; HDRP renders this texture into A2B10G10R10_UNorm (quantisation 1/2046 "
-        "more). The Charlie + fabric texture is not in this preset yet.";
-    p.textures = {t};
+        "more).";
+    // The Charlie sheen and fabric Lambert (preIntegratedFGD_CharlieFabricLambert.shader,
+    // GetPreIntegratedFGDCharlieAndFabricLambert): texel centres of (NdotV,
+    // perceptualRoughness), x = B / 2 pi, y = E / 2 pi (the shader multiplies by 2 pi:
+    // specularFGD = lerp(x, y, F0) 2 pi), z = FabricLambert = 1 - alpha / 2; Charlie D with
+    // V_Charlie (no terminator softening, as glTF's), alpha = perceptualRoughness^2.
+    PresetTexture charlie;
+    charlie.file = "PreIntegratedFGD_CharlieFabricLambert.exr";
+    charlie.format = "exr";
+    charlie.axes = {CentresAxis("mu", 64), CentresAxis("roughness", 64)};
+    const double inverseTwoPi = 0.15915494309189533577;
+    PresetChannel b{"sheen_B"}, e{"sheen_E"};
+    b.scale = e.scale = inverseTwoPi;
+    charlie.channels = {b, e, {"fabric_lambert"}};
+    charlie.model.sheenVisibility = SheenVisibility::kCharlie;
+    charlie.model.sheenAlpha = PresetAlpha::kSquared;
+    charlie.sampling =
+        "SAMPLE_TEXTURE2D_LOD(_PreIntegratedFGD_CharlieAndFabric, s_linear_clamp_sampler, "
+        "float2(NdotV, perceptualRoughness), 0).xyz";
+    charlie.source =
+        "Unity-Technologies/Graphics com.unity.render-pipelines.high-definition/Runtime/"
+        "Material/PreIntegratedFGD/PreIntegratedFGD.hlsl, "
+        "preIntegratedFGD_CharlieFabricLambert.shader; ShaderLibrary/BSDF.hlsl (D_CharlieNoPI, "
+        "V_Charlie, FabricLambertNoPI)";
+    charlie.notes = "float32 EXR; x and y are divided by 2 pi as HDRP stores them.";
+    p.textures = {t, charlie};
     return p;
   }();
   return preset;

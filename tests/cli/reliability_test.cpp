@@ -250,7 +250,12 @@ TEST(Reliability, SigintAndSigtermEndPromptlyAndLeaveNothing) {
     ASSERT_TRUE(status != -1 && WIFEXITED(status)) << name << ": " << ReadAll(log);
     EXPECT_EQ(WEXITSTATUS(status), 128 + signal) << name << ": " << ReadAll(log);
     EXPECT_LT(latency, 1.0) << name;
-    const std::vector<std::string> lines = Lines(ReadAll(log));
+    // One line about the signal. The large-request estimate may come
+    // before it: it is printed when the bake, timed on a sample, would take
+    // over 10 s, which a loaded machine can make this one.
+    std::vector<std::string> lines = Lines(ReadAll(log));
+    if (lines.size() == 2 && lines[0].find("texels, about") != std::string::npos)
+      lines.erase(lines.begin());
     ASSERT_EQ(lines.size(), 1u) << ReadAll(log);
     EXPECT_EQ(lines[0],
               "lutbake bake: interrupted by " + name + "; nothing written to " + out.string());

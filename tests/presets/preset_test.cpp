@@ -12,8 +12,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "lutbake/formats/table_reader.h"
 #include "lutbake/integrators/furnace.h"
 #include "lutbake/integrators/gauss_legendre.h"
+#include "lutbake/models/sheen.h"
 #include "lutbake/tables/storage.h"
 #include "support/cli_run.h"
 #include "support/csv.h"
@@ -318,6 +320,83 @@ TEST(Presets, OptionsAPresetFixesAreRefused) {
   EXPECT_EQ(unknown.status, 2);
   EXPECT_NE(unknown.output.find("unity-hdrp"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir / "preset.json"));
+}
+
+// HDRP's Charlie + fabric texture: x = B / 2 pi, y = E / 2 pi against a
+// brute-force integral of D W (1 - o.h)^5 over light directions (the
+// library's Charlie D and visibility, not its integrators), z = 1 - alpha/2.
+TEST(Presets, HdrpCharlieMatchesBruteForce) {
+  const PresetTexture &texture = TextureOf("unity-hdrp", 1);
+  PresetTexture small = texture;
+  small.axes[0].count = small.axes[1].count = 8;  // centres at (i + 0.5) / 8
+  const Table table = BakePresetTexture(small, "unity-hdrp");
+  const double pi = 3.14159265358979323846;
+  for (int ix : {1, 4, 7})
+    for (int iy : {3, 5, 7}) {  // alpha >= 0.19: smooth enough for the rule
+      const double mu_o = small.axes[0].Quantity(ix), p = small.axes[1].Quantity(iy);
+      const double alpha = p * p, s_o = std::sqrt(1 - mu_o * mu_o);
+      double weighted[2];
+      for (int c = 0; c < 2; ++c)
+        weighted[c] = BruteForceAlbedo(
+            [&](double mu_i, double s_i, double phi) {
+              const double hx = s_o + s_i * std::cos(phi), hy = s_i * std::sin(phi),
+                           hz = mu_o + mu_i;
+              const double len = std::sqrt(hx * hx + hy * hy + hz * hz);
+              const double nh = hz / len, vh = (s_o * hx + mu_o * hz) / len;
+              const double d = CharlieD(alpha, (1 - nh) * (1 + nh));
+              const double w = SheenCosineVisibility(SheenVisibility::kCharlie, alpha, mu_o, mu_i);
+              return d * w / mu_i * (c == 0 ? std::pow(1 - vh, 5) : 1.0);
+            },
+            32);
+      EXPECT_NEAR(table.value(ix, iy, 0) * 2 * pi, weighted[0], 2e-6) << mu_o << " " << p;
+      EXPECT_NEAR(table.value(ix, iy, 1) * 2 * pi, weighted[1], 2e-6) << mu_o << " " << p;
+      EXPECT_DOUBLE_EQ(table.value(ix, iy, 2), 1 - alpha / 2);
+    }
+}
+
+// Every preset's files read back by `lutbake check` against the preset
+// integrated again; a tampered value fails it.
+TEST(Presets, CheckReadsEveryPresetDirectoryBack) {
+  for (const char *name : {"filament-mobile", "unreal", "unity-hdrp", "godot", "threejs",
+                           "learnopengl", "eevee", "cycles"}) {
+    const auto dir = test::Scratch(std::string("preset_check_") + name);
+    ASSERT_EQ(test::Lutbake("bake --preset " + std::string(name) + " --out " + dir.string()).status,
+              0);
+    const auto checked = test::Lutbake("check " + dir.string());
+    EXPECT_EQ(checked.status, 0) << name << "\n" << checked.output;
+    EXPECT_EQ(checked.output.find("FAIL"), std::string::npos) << checked.output;
+  }
+  // Tamper with Cycles' E: one literal changed in its last digits.
+  const auto dir = test::Scratch("preset_check_cycles");
+  const auto path = dir / "table_ggx_E.h";
+  std::ifstream in(path);
+  std::string text((std::istreambuf_iterator<char>(in)), {});
+  in.close();
+  const size_t at = text.find("0.980404");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 8, "0.980504");
+  std::ofstream(path) << text;
+  const auto tampered = test::Lutbake("check " + dir.string());
+  EXPECT_EQ(tampered.status, 1) << tampered.output;
+  EXPECT_NE(tampered.output.find("FAIL table_ggx_E.h"), std::string::npos) << tampered.output;
+}
+
+// three.js's module: its own API (getDFGLUT over a DataTexture of halves)
+// and the halves of the exact values.
+TEST(Presets, ThreejsModuleIsThreejsFile) {
+  const auto dir = test::Scratch("preset_threejs_module");
+  ASSERT_EQ(test::Lutbake("bake --preset threejs --out " + dir.string()).status, 0);
+  std::ifstream in(dir / "DFGLUTData.js");
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(text.find("export function getDFGLUT()"), std::string::npos);
+  EXPECT_NE(text.find("new DataTexture( DATA, 16, 16, RGFormat, HalfFloatType )"),
+            std::string::npos);
+  EXPECT_NE(text.find("from '../../constants.js'"), std::string::npos);
+  const Table read = ReadSourceTable((dir / "DFGLUTData.js").string());
+  const Table exact = BakePresetTexture(TextureOf("threejs"), "threejs");
+  ASSERT_EQ(read.values.size(), exact.values.size());
+  for (size_t i = 0; i < exact.values.size(); ++i)
+    ASSERT_EQ(read.values[i], StoredValue(exact.values[i], ValueType::kHalf)) << i;
 }
 
 }  // namespace

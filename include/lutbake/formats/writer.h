@@ -62,6 +62,9 @@ std::unique_ptr<TableWriter> MakeDdsWriter(ValueType storage);
 // --format c-array (c_array_writer.cpp): T.h declaring static const float
 // T[N] = {...}, as Blender Cycles' shader.tables does (engine presets).
 std::unique_ptr<TableWriter> MakeCArrayWriter();
+// --format threejs-dfg (threejs_module.cpp): a 2-channel table as three.js's
+// DFGLUTData.js (half floats, getDFGLUT()), for the threejs preset.
+std::unique_ptr<TableWriter> MakeThreejsDfgWriter();
 
 // Throws IoError naming `path`, the table and the texel when a value is NaN
 // or outside [0, 1]: `format` (e.g. "PNG") stores only that range.

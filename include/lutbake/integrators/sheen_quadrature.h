@@ -71,6 +71,13 @@ SheenIntegral IntegrateSheenAlbedoAverage(SheenVisibility visibility, double alp
 // check`) to judge the default.
 SheenIntegral IntegrateSheenAlbedoAdaptive(SheenVisibility visibility, double alpha, double mu_o,
                                            double tolerance);
+// The sheen's split-sum bias B = int D V (1 - o.h)^5 mu_i d(omega_i) (the
+// F90 term of a Schlick-weighted sheen, as Unity HDRP's Charlie FGD stores
+// it; F0 A + F90 B with A = E - B), by the same adaptive rule with the
+// weight in the inner integrand (0 <= weight <= 1, so the shortcut bound
+// above still holds).
+SheenIntegral IntegrateSheenSchlickWeightedAdaptive(SheenVisibility visibility, double alpha,
+                                                    double mu_o, double tolerance);
 SheenIntegral IntegrateSheenAlbedoAverageAdaptive(SheenVisibility visibility, double alpha,
                                                   double tolerance);
 

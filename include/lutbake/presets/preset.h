@@ -87,6 +87,8 @@ struct PresetModel {
 //   "E"         A + B, the directional albedo (F = 1)
 //   "Eavg"      2 int_0^1 E(mu) mu dmu (a 1D table over roughness)
 //   "sheen_E"   the Charlie sheen's directional albedo
+//   "sheen_B"   its Schlick-weighted part int D V (1 - o.h)^5 mu_i (HDRP)
+//   "fabric_lambert"  1 - alpha / 2 (HDRP's FabricLambertNoPI)
 //   "f82"       the F82-tint term C (tables f82): F0 A + F90 B - a C
 //   "disney_diffuse"  Burley's diffuse albedo as Unity HDRP renormalises it
 //               (preset.cpp, DisneyDiffuseAlbedo), at perceptual roughness
