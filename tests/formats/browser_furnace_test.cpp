@@ -27,7 +27,8 @@
 // convention of tables sampled at their edges) reads the average of two
 // neighbours instead: B = (1 - mu)^5-like near mu = 0 changes by ~0.1 per
 // texel there, ~50 times the largest allowance, so the test fails (tried:
-// see the README, "Browser test").
+// see the README, "Browser test"). The page posts its pixels to a loopback
+// server (support/headless_chromium.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -40,6 +41,7 @@
 
 #include "lutbake/formats/table_reader.h"
 #include "support/cli_run.h"
+#include "support/headless_chromium.h"
 
 namespace lutbake {
 namespace {
@@ -51,16 +53,6 @@ std::string ReadText(const fs::path &path) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-std::string RunCommand(const std::string &command, int *status) {
-  std::string out;
-  FILE *pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return out;
-  char buffer[4096];
-  for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
-  *status = ::pclose(pipe);
-  return out;
 }
 
 constexpr int kSize = 32;
@@ -153,7 +145,7 @@ void main() {
     out.pixels = Array.from(pixels, v => floatTarget ? v : v / 255);
     out.error = gl.getError();
   } catch (e) { out.exception = String(e && e.stack || e); }
-  console.log('LUTBAKE_FURNACE ' + JSON.stringify(out));
+  await fetch('http://127.0.0.1:LUTBAKE_RESULT_PORT/', { method: 'POST', body: JSON.stringify(out) });
 })();
 )";
 
@@ -170,29 +162,14 @@ TEST(BrowserFurnace, WebGl2ShadesTheFurnaceFromTheEmittedModuleAndGlsl) {
                                   {"Eavg", ReadText(d / "Eavg.js")},
                                   {"dfg", ReadText(d / "dfg.js")},
                                   {"glsl", ReadText(d / "lutbake.glsl")}};
-  std::ofstream(d / "furnace.html")
-      << "<!doctype html><script type=\"module\">\nconst SIZE = " << kSize
-      << ";\nconst sources = " << sources.dump() << ";\n"
-      << kPage << "</script>\n";
-  // --dump-dom ends the run when the page looks idle, which can come before
-  // the WebGPU / WebGL promises settle (seen once in a few runs): up to three
-  // runs, each in a fresh profile, until the page's line is there.
-  std::string out;
-  for (int run = 0; run < 3 && out.find("LUTBAKE_FURNACE ") == std::string::npos; ++run) {
-    int status = 0;
-    out = RunCommand(
-        "timeout 120 chromium --headless=new --no-sandbox --no-first-run --disable-extensions "
-        "--disable-background-networking --user-data-dir='" +
-            (d / ("profile" + std::to_string(run))).string() +
-            "' --use-angle=swiftshader --enable-unsafe-swiftshader --enable-logging=stderr --v=0 "
-            "--virtual-time-budget=60000 --dump-dom 'file://" +
-            (d / "furnace.html").string() + "' 2>&1 >/dev/null",
-        &status);
-  }
-  const size_t at = out.find("LUTBAKE_FURNACE ");
-  ASSERT_NE(at, std::string::npos) << out.substr(0, 4000);
-  const size_t end = out.find("\", source:", at);
-  const nlohmann::json page = nlohmann::json::parse(out.substr(at + 16, end - at - 16));
+  const std::string html =
+      "<!doctype html><script type=\"module\">\nconst SIZE = " + std::to_string(kSize) +
+      ";\nconst sources = " + sources.dump() + ";\n" + kPage + "</script>\n";
+  std::string log;
+  const std::string body =
+      test::RunPage(d, html, "--use-angle=swiftshader --enable-unsafe-swiftshader", "", 120, &log);
+  ASSERT_FALSE(body.empty()) << log;
+  const nlohmann::json page = nlohmann::json::parse(body);
   ASSERT_FALSE(page.contains("exception")) << page["exception"];
   ASSERT_EQ(page["error"], 0);
   const bool floatTarget = page["target"] == "RGBA32F";

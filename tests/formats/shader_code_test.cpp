@@ -28,6 +28,7 @@
 
 #include "lutbake/formats/source_formats.h"
 #include "lutbake/tables/lookup.h"
+#include "support/headless_chromium.h"
 #include "support/small_tables.h"
 
 namespace lutbake {
@@ -264,9 +265,8 @@ TEST(ShaderCode, WgslCompilesWithTint) {
   std::ofstream(dir / "test.wgsl") << wgsl;
   // The good module, and one with a type error that Tint must report.
   const nlohmann::json sources = {wgsl, "fn broken() -> f32 { return 1u; }\n"};
-  std::ofstream(dir / "page.html")
-      << "<!doctype html><script>\nconst sources = " << sources.dump() << ";\n"
-      << R"((async () => {
+  const std::string page = "<!doctype html><script>\nconst sources = " + sources.dump() + ";\n" +
+                           R"((async () => {
   const out = { adapter: false, modules: [] };
   try {
     const adapter = await navigator.gpu.requestAdapter();
@@ -282,30 +282,17 @@ TEST(ShaderCode, WgslCompilesWithTint) {
       out.modules.push(entry);
     }
   } catch (e) { out.exception = String(e); }
-  console.log('LUTBAKE_WGSL ' + JSON.stringify(out));
+  await fetch('http://127.0.0.1:LUTBAKE_RESULT_PORT/', { method: 'POST', body: JSON.stringify(out) });
 })();
 </script>)";
-  // --dump-dom ends the run when the page looks idle, which can come before
-  // the WebGPU / WebGL promises settle (seen once in a few runs): up to three
-  // runs, each in a fresh profile, until the page's line is there.
-  std::string out;
-  for (int run = 0; run < 3 && out.find("LUTBAKE_WGSL ") == std::string::npos; ++run) {
-    int status = 0;
-    out = RunCommand(
-        "VK_ICD_FILENAMES=/usr/lib/chromium/vk_swiftshader_icd.json timeout 120 chromium "
-        "--headless=new --no-sandbox --no-first-run --disable-extensions "
-        "--disable-background-networking --user-data-dir='" +
-            (dir / ("profile" + std::to_string(run))).string() +
-            "' --enable-unsafe-webgpu --enable-features=Vulkan --use-vulkan=swiftshader "
-            "--use-webgpu-adapter=swiftshader --enable-logging=stderr --v=0 "
-            "--virtual-time-budget=60000 --dump-dom 'file://" +
-            (dir / "page.html").string() + "' 2>&1 >/dev/null",
-        &status);
-  }
-  const size_t at = out.find("LUTBAKE_WGSL ");
-  ASSERT_NE(at, std::string::npos) << out.substr(0, 4000);
-  const size_t end = out.find("\", source:", at);
-  const nlohmann::json result = nlohmann::json::parse(out.substr(at + 13, end - at - 13));
+  std::string log;
+  const std::string body =
+      test::RunPage(dir, page,
+                    "--enable-unsafe-webgpu --enable-features=Vulkan --use-vulkan=swiftshader "
+                    "--use-webgpu-adapter=swiftshader",
+                    "VK_ICD_FILENAMES=/usr/lib/chromium/vk_swiftshader_icd.json", 120, &log);
+  ASSERT_FALSE(body.empty()) << log;
+  const nlohmann::json result = nlohmann::json::parse(body);
   ASSERT_EQ(result["adapter"], true) << result.dump(1);
   ASSERT_EQ(result["modules"].size(), 2u) << result.dump(1);
   EXPECT_EQ(result["modules"][0]["messages"].size(), 0u) << result.dump(1);
