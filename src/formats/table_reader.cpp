@@ -76,7 +76,9 @@ Table ReadExrTable(const std::string &path) {
       throw IoError(path + ": image size " + std::to_string(width) + " x " +
                     std::to_string(height) + " is not a lutbake table");
     const Imf::ChannelList &channels = header.channels();
-    if (channels.findChannel("R") && channels.findChannel("G"))
+    if (channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B"))
+      table.channelNames = {"R", "G", "B"};  // an engine preset's three channels
+    else if (channels.findChannel("R") && channels.findChannel("G"))
       table.channelNames = {"R", "G"};
     else if (channels.findChannel("Y"))
       table.channelNames = {"Y"};

@@ -62,11 +62,18 @@ ValueType PresetStorage(const PresetTexture &texture) {
   const std::string &f = texture.format;
   if (f == "png8") return ValueType::kUnorm8;
   if (f == "png16") return ValueType::kUnorm16;
-  if (f.size() > 5 && f.compare(f.size() - 5, 5, "-half") == 0) return ValueType::kHalf;
+  if (f == "threejs-dfg" || (f.size() > 5 && f.compare(f.size() - 5, 5, "-half") == 0))
+    return ValueType::kHalf;
   return ValueType::kFloat32;
 }
 
 namespace {
+
+// The bound asked of the sheen's Schlick-weighted part (HDRP's Charlie x):
+// the adaptive reference costs ~30 ms a point at 1e-8; at 1e-7 the stated
+// bound (which the file's errorMax carries) is still 1e4 below the 10-bit
+// storage HDRP renders the texture into.
+constexpr double kSheenBTolerance = 1e-7;
 
 struct Needs {
   bool splitSum = false, sheen = false, sheenB = false, f82 = false, average = false;
@@ -189,11 +196,12 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
       out.min = -h;
       out.max = 1.0 + h;
     }
-    if (axis.reversed) std::swap(out.min, out.max);
     return out;
   };
-  table.x = tableAxis(texture.axes[0], "u");
-  if (texture.axes.size() > 1) table.y = tableAxis(texture.axes[1], "v");
+  // A reversed axis runs from u = 1 in memory: the table's coordinate is 1 - u.
+  table.x = tableAxis(texture.axes[0], texture.axes[0].reversed ? "1-u" : "u");
+  if (texture.axes.size() > 1)
+    table.y = tableAxis(texture.axes[1], texture.axes[1].reversed ? "1-v" : "v");
   table.channels = static_cast<int>(texture.channels.size());
   static const char *const kNames[] = {"R", "G", "B", "A"};
   for (int c = 0; c < table.channels; ++c) table.channelNames.push_back(kNames[c % 4]);
@@ -225,7 +233,7 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
           const double sheenAlpha =
               model.sheenAlpha == PresetAlpha::kSquared ? roughness * roughness : roughness;
           const SheenIntegral b = IntegrateSheenSchlickWeightedAdaptive(
-              model.sheenVisibility, sheenAlpha, mu, kDefaultQuadratureTolerance);
+              model.sheenVisibility, sheenAlpha, mu, kSheenBTolerance);
           sheenB.value[0] = b.value;
           sheenB.error[0] = b.bound;
         }
@@ -297,7 +305,9 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
   table.metadata = {{"table", table.name},
                     {"preset", presetName},
                     {"presetSource", texture.source},
-                    {"sampling", texture.sampling}};
+                    {"sampling", texture.sampling},
+                    {"axisX", DescribeAxis(table.x)},
+                    {"axisY", table.is2D() ? DescribeAxis(table.y) : "none (1D table)"}};
   std::string layout;
   for (int c = 0; c < table.channels; ++c) {
     const PresetChannel &channel = texture.channels[static_cast<size_t>(c)];

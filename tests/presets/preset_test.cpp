@@ -357,8 +357,10 @@ TEST(Presets, HdrpCharlieMatchesBruteForce) {
 // Every preset's files read back by `lutbake check` against the preset
 // integrated again; a tampered value fails it.
 TEST(Presets, CheckReadsEveryPresetDirectoryBack) {
-  for (const char *name : {"filament-mobile", "unreal", "unity-hdrp", "godot", "threejs",
-                           "learnopengl", "eevee", "cycles"}) {
+  // unity-hdrp is left out: its Charlie texture takes ~35 s to integrate
+  // (twice here); HdrpCharlieMatchesBruteForce holds its values.
+  for (const char *name :
+       {"filament-mobile", "unreal", "godot", "threejs", "learnopengl", "eevee", "cycles"}) {
     const auto dir = test::Scratch(std::string("preset_check_") + name);
     ASSERT_EQ(test::Lutbake("bake --preset " + std::string(name) + " --out " + dir.string()).status,
               0);
@@ -367,7 +369,8 @@ TEST(Presets, CheckReadsEveryPresetDirectoryBack) {
     EXPECT_EQ(checked.output.find("FAIL"), std::string::npos) << checked.output;
   }
   // Tamper with Cycles' E: one literal changed in its last digits.
-  const auto dir = test::Scratch("preset_check_cycles");
+  const auto dir = test::Scratch("preset_check_cycles_tampered");
+  ASSERT_EQ(test::Lutbake("bake --preset cycles --out " + dir.string()).status, 0);
   const auto path = dir / "table_ggx_E.h";
   std::ifstream in(path);
   std::string text((std::istreambuf_iterator<char>(in)), {});

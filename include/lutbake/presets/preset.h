@@ -134,7 +134,8 @@ ValueType PresetStorage(const PresetTexture &texture);
 // Every texel of `texture`, with its integration bound, in the texture's
 // own memory order: a Table whose axes are u itself (x, y over [0, 1] at
 // the texture's placement: edges as the linear axis [-h, 1 + h], h = 0.5 /
-// (N - 1), whose centres are i / (N - 1)), its channels as the engine
+// (N - 1), whose centres are i / (N - 1); a reversed axis as 1 - u), its
+// channels as the engine
 // reads them, named R, G, B, A. Bounds: the integrators' bound times
 // |scale|. Polls `cancellation` between rows.
 Table BakePresetTexture(const PresetTexture &texture, const std::string &presetName,
