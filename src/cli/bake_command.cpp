@@ -526,10 +526,7 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
                 << "--max-samples " << settings.maxSamples << " in " << JoinNames(unreached)
                 << "; nothing written. Raise --max-samples or drop --sampling-only.\n";
       output.Discard();  // removes the temporaries, so that the directory is empty again
-      if (created) {
-        std::error_code ec;
-        std::filesystem::remove(o.outDir, ec);
-      }
+      RemoveCreatedDirectory(o.outDir, created);
       return 1;
     }
     // The last moment a signal stops the run; one that arrives during the
@@ -538,19 +535,13 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
     output.Commit();
   } catch (const Cancelled &c) {
     // `output` is gone: its temporaries with it.
-    if (created) {
-      std::error_code ec;
-      std::filesystem::remove(o.outDir, ec);  // only succeeds if still empty
-    }
+    RemoveCreatedDirectory(o.outDir, created);
     std::cerr << "lutbake bake: interrupted by " << SignalName(c.reason())
               << "; nothing written to " << o.outDir << "\n";
     return 128 + c.reason();
   } catch (const IoError &e) {
     std::cerr << "lutbake bake: " << e.what() << "\n";
-    if (created) {
-      std::error_code ec;
-      std::filesystem::remove(o.outDir, ec);  // only succeeds if still empty
-    }
+    RemoveCreatedDirectory(o.outDir, created);
     return 1;
   } catch (const std::bad_alloc &) {
     std::cerr << "lutbake bake: out of memory\n";

@@ -190,4 +190,10 @@ int ThreadCount(int requested) {
                        : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
+void RemoveCreatedDirectory(const std::string &dir, bool created) {
+  if (!created) return;
+  std::error_code ec;
+  std::filesystem::remove(dir, ec);  // only succeeds if still empty
+}
+
 }  // namespace lutbake::cli

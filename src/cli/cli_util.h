@@ -44,6 +44,10 @@ CLI::Validator InRange(T lo, T hi, const std::string &what) {
 // *usageError when the problem is the value itself (a file, not a directory).
 std::string PrepareOutputDirectory(const std::string &dir, bool *created, bool *usageError);
 
+// After a failed or interrupted run: removes `dir` if this run created it
+// (PrepareOutputDirectory's *created) and it is still empty.
+void RemoveCreatedDirectory(const std::string &dir, bool created);
+
 // The same, printing "lutbake COMMAND: --out DIR: reason" on failure. Returns
 // 0 when the directory is ready, else the exit status (2 usage, 1 runtime).
 int PrepareOutputOrComplain(const std::string &command, const std::string &dir, bool *created);

@@ -170,19 +170,13 @@ int RunPresetBake(const BakeOptions &o, const std::string &commandLine, CLI::App
     interrupt.token().ThrowIfCancelled();
     output.Commit();
   } catch (const Cancelled &c) {
-    if (created) {
-      std::error_code ec;
-      std::filesystem::remove(o.outDir, ec);
-    }
+    RemoveCreatedDirectory(o.outDir, created);
     std::cerr << "lutbake bake: interrupted by " << SignalName(c.reason())
               << "; nothing written to " << o.outDir << "\n";
     return 128 + c.reason();
   } catch (const IoError &e) {
     std::cerr << "lutbake bake: " << e.what() << "\n";
-    if (created) {
-      std::error_code ec;
-      std::filesystem::remove(o.outDir, ec);
-    }
+    RemoveCreatedDirectory(o.outDir, created);
     return 1;
   }
   manifest["seconds"] =

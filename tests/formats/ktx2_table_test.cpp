@@ -13,6 +13,7 @@
 #include "lutbake/formats/table_reader.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/tables/storage.h"
+#include "support/cli_run.h"
 #include "support/small_tables.h"
 
 namespace lutbake {
@@ -23,15 +24,7 @@ using test::FormatTempDir;
 
 constexpr const char *kKtxParse = "ktx-parse@2.0.0";
 
-std::string RunCommand(const std::string &command, int *status) {
-  std::string out;
-  FILE *pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return out;
-  char buffer[4096];
-  for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
-  *status = ::pclose(pipe);
-  return out;
-}
+using test::RunCommand;
 
 struct Case {
   std::string name;

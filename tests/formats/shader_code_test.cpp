@@ -28,6 +28,7 @@
 
 #include "lutbake/formats/source_formats.h"
 #include "lutbake/tables/lookup.h"
+#include "support/cli_run.h"
 #include "support/headless_chromium.h"
 #include "support/small_tables.h"
 
@@ -36,15 +37,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string RunCommand(const std::string &command, int *status) {
-  std::string out;
-  FILE *pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return out;
-  char buffer[4096];
-  for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
-  *status = ::pclose(pipe);
-  return out;
-}
+using test::RunCommand;
 
 bool Have(const char *tool) {
   return std::system(("command -v " + std::string(tool) + " >/dev/null 2>&1").c_str()) == 0;

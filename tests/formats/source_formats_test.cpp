@@ -110,15 +110,7 @@ TEST(SourceFormats, ReaderRejectsAMissingValue) {
   EXPECT_THROW(ReadSourceTable(path.string()), IoError);
 }
 
-std::string RunCommand(const std::string &command, int *status) {
-  std::string out;
-  FILE *pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return out;
-  char buffer[4096];
-  for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
-  *status = ::pclose(pipe);
-  return out;
-}
+using test::RunCommand;
 
 // The ES module as node imports it: the exports, and every typed-array
 // element (Float32Array: the float32 value; Uint16Array: the binary16 bits).

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -85,5 +86,16 @@ inline std::string CompileAndRun(const std::filesystem::path &dir, const std::st
           ::lutbake::test::CompileAndRun(dir, compiler_, standard_, &status_); \
       EXPECT_EQ(status_, 0) << command_;                                       \
     }
+
+// Runs `command` through the shell: its stdout, and its wait status in *status.
+inline std::string RunCommand(const std::string &command, int *status) {
+  std::string out;
+  FILE *pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return out;
+  char buffer[4096];
+  for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
+  *status = ::pclose(pipe);
+  return out;
+}
 
 }  // namespace lutbake::test
