@@ -147,9 +147,10 @@ void CheckExrHeader(const std::string &path, const std::string &bytes) {
       // Channels: a name, NUL, 16 bytes (type, linearity, sampling); then NUL.
       size_t c = at;
       while (c < end && bytes[c] != '\0') {
-        name(&c, end, 255);
-        if (end - c < 16) throw malformed();
-        c += 16;
+        const size_t nul = bytes.find('\0', c);
+        if (nul == std::string::npos || nul >= end || nul - c > 255 || end - nul - 1 < 16)
+          throw malformed();
+        c = nul + 17;
         ++channels;
       }
       if (c + 1 != end) throw malformed();

@@ -211,7 +211,7 @@ TEST(HostileInput, ExrAttributesAreCheckedBeforeOpenExrAllocatesForThem) {
   // from the wrong place.
   const auto dir = test::FormatTempDir("hostile_exr");
   std::string exr = ExrHeaderStart(4);
-  exr += std::string("table\0string\0", 14);
+  exr += std::string("table\0string\0", 13);
   PutLE(&exr, 0x70000000u, 4);
   exr += "E";
   std::string message = Refusal(ReadExrTable, WriteFile(dir / "attribute.exr", exr));
