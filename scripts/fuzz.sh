@@ -50,8 +50,11 @@ for target in "${targets[@]}"; do
   mkdir -p "$kept" "$fresh"
   # -malloc_limit_mb: an allocation over 512 MiB is a finding (the readers
   # bound what they allocate by the input's size); -timeout: a hang is one.
+  # Every input takes milliseconds (stat::slowest_unit_time_sec is 0), but
+  # on a shared machine a whole VM stalled for over 2 minutes during a run
+  # (an input timed out in a vector's push_back), hence 300 s, not 10.
   (cd build-fuzz && "./lutbake_${target}_fuzzer" -max_total_time="$seconds" -max_len="$max_len" \
-    -timeout=10 -malloc_limit_mb=512 -dict="../tests/fuzz/$dict" -print_final_stats=1 \
+    -timeout=300 -malloc_limit_mb=512 -dict="../tests/fuzz/$dict" -print_final_stats=1 \
     -artifact_prefix="crash-$target-" "fresh-$target" "../$kept" 2>&1 |
     tee "logs/$target.log" | grep -E '^(#[0-9]+ +DONE|Done|stat::|==[0-9]+==ERROR|SUMMARY)' || true)
   if grep -qE 'ERROR: (AddressSanitizer|UndefinedBehaviorSanitizer|libFuzzer)|runtime error' \
