@@ -178,8 +178,11 @@ Table ReadBinaryTable(const std::string &path) {
   const auto readAxis = [&](Axis *axis, size_t headerAt, const char *which) {
     const uint32_t mapping = GetMapping(in, headerAt);
     if (mapping == 0) {
-      if (!(axis->max > axis->min))
-        throw IoError(path + ": axis " + which + " has an empty range or one that is not a number");
+      // A range whose width overflows (an infinite end, or -1e308 to 1e308)
+      // would give every lookup a NaN coordinate.
+      if (!(axis->max > axis->min) || !std::isfinite(axis->max - axis->min))
+        throw IoError(path + ": axis " + which +
+                      " has an empty or infinite range, or one that is not a number");
       return;
     }
     if (mapping != 1) throw IoError(path + ": axis " + which + " has an unknown mapping");

@@ -223,6 +223,14 @@ Table ReadPngTable(const std::string &path) {
   if ((rowBytes + 1) * static_cast<size_t>(height) > (size_t{1} << 30))
     throw refuse("an image of " + std::to_string(width) + " x " + std::to_string(height) +
                  ", over 1 GiB");
+  // Deflate inflates at most 1032-fold (a 258-byte match in two bits): an
+  // image larger than that of its IDAT bytes is refused before it is
+  // allocated, so that a 100-byte file cannot ask for a gigabyte.
+  constexpr size_t kMaxInflateRatio = 1032;
+  if ((rowBytes + 1) * static_cast<size_t>(height) > kMaxInflateRatio * packed.size())
+    throw refuse("an image of " + std::to_string(width) + " x " + std::to_string(height) +
+                 " from " + std::to_string(packed.size()) +
+                 " bytes of IDAT, more than deflate can hold");
   std::string raw((rowBytes + 1) * height, '\0');
   uLongf rawSize = static_cast<uLongf>(raw.size());
   if (uncompress(reinterpret_cast<Bytef *>(raw.data()), &rawSize,

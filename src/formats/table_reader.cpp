@@ -6,11 +6,13 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
+#include <ImfStdIO.h>
 #include <ImfStringAttribute.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "lutbake/formats/writer.h"
@@ -58,10 +60,146 @@ void ShapeFromMetadata(const std::string &path, long width, long height, Table *
     throw IoError(path + ": attribute 'table' missing or not one of " + TableNameList());
 }
 
+namespace {
+
+uint32_t GetLE32(const std::string &bytes, size_t at) {
+  uint32_t v = 0;
+  for (int i = 0; i < 4; ++i)
+    v |= static_cast<uint32_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
+  return v;
+}
+
+// OpenEXR allocates what a header says before it can know better: each
+// attribute's value at its stated size (a 2 GB attribute in a 1 KB file), a
+// preview image or string vector at the sizes inside it, and line buffers and
+// a chunk table for the data window; and it reads fixed-size and channel
+// list values at their own length whatever size the file states, so that a
+// wrong size shifts everything after it. So the header is walked here first,
+// the way OpenEXR will read it, and the file refused unless it is a
+// single-part scanline image (lutbake writes nothing else) whose every
+// attribute fits in what is left of the file, is as long as its type says
+// and holds no size larger than itself, and whose pixels the file can hold:
+// no compression of OpenEXR inflates more than about 1400-fold (ZIP's
+// deflate 1032-fold, PXR24 deflates 24 of every 32 bits, RLE 64-fold, PIZ's
+// Huffman runs about 450-fold), so a data window over 65536 texels a side, or
+// of more than 2048 times the file's size in float32 channels, is refused
+// before OpenEXR allocates for it.
+void CheckExrHeader(const std::string &path, const std::string &bytes) {
+  const auto refuse = [&](const std::string &why) { return IoError(path + ": " + why); };
+  constexpr uint32_t kMagic = 20000630;
+  if (bytes.size() < 8 || GetLE32(bytes, 0) != kMagic) throw refuse("not an OpenEXR file");
+  const uint32_t version = GetLE32(bytes, 4);
+  constexpr uint32_t kTiled = 0x200, kLongNames = 0x400, kDeep = 0x800, kMultiPart = 0x1000;
+  if ((version & 0xff) != 2 || (version & (kTiled | kDeep | kMultiPart)) != 0)
+    throw refuse("not a single-part scanline OpenEXR 2 image (version field " +
+                 std::to_string(version) + ")");
+  const size_t maxName = (version & kLongNames) ? 255 : 31;
+  // A NUL-terminated name of at most `longest` characters at *at, before `end`.
+  const auto name = [&](size_t *at, size_t end, size_t longest) {
+    const size_t nul = bytes.find('\0', *at);
+    if (nul == std::string::npos || nul >= end || nul - *at > longest)
+      throw refuse("a name in the header is unterminated or too long");
+    std::string text = bytes.substr(*at, nul - *at);
+    *at = nul + 1;
+    return text;
+  };
+  // The value sizes of OpenEXR's fixed-size attribute types.
+  static const std::pair<const char *, uint32_t> kFixedSizes[] = {{"box2i", 16},
+                                                                  {"box2f", 16},
+                                                                  {"chromaticities", 32},
+                                                                  {"compression", 1},
+                                                                  {"deepImageState", 1},
+                                                                  {"double", 8},
+                                                                  {"envmap", 1},
+                                                                  {"float", 4},
+                                                                  {"int", 4},
+                                                                  {"keycode", 28},
+                                                                  {"lineOrder", 1},
+                                                                  {"m33f", 36},
+                                                                  {"m33d", 72},
+                                                                  {"m44f", 64},
+                                                                  {"m44d", 128},
+                                                                  {"rational", 8},
+                                                                  {"tiledesc", 9},
+                                                                  {"timecode", 8},
+                                                                  {"v2i", 8},
+                                                                  {"v2f", 8},
+                                                                  {"v2d", 16},
+                                                                  {"v3i", 12},
+                                                                  {"v3f", 12},
+                                                                  {"v3d", 24}};
+  long width = 0, height = 0, channels = 0;
+  for (size_t at = 8;;) {
+    const std::string attribute = name(&at, bytes.size(), maxName);
+    if (attribute.empty()) break;  // the header's end
+    const std::string type = name(&at, bytes.size(), maxName);
+    if (bytes.size() - at < 4) throw refuse("the header is cut off");
+    const uint32_t size = GetLE32(bytes, at);
+    at += 4;
+    const size_t end = at + size;
+    if (size > bytes.size() - at)
+      throw refuse("attribute " + attribute + " says " + std::to_string(size) +
+                   " bytes, more than the file has left");
+    const auto malformed = [&] {
+      return refuse("attribute " + attribute + " (" + type + ") is malformed");
+    };
+    for (const auto &[fixedType, fixedSize] : kFixedSizes)
+      if (type == fixedType && size != fixedSize) throw malformed();
+    if (type == "chlist") {
+      // Channels: a name, NUL, 16 bytes (type, linearity, sampling); then NUL.
+      size_t c = at;
+      while (c < end && bytes[c] != '\0') {
+        const size_t nul = bytes.find('\0', c);
+        if (nul == std::string::npos || nul >= end || nul - c > 255 || end - nul - 1 < 16)
+          throw malformed();
+        c = nul + 17;
+        ++channels;
+      }
+      if (c + 1 != end) throw malformed();
+    } else if (type == "preview") {
+      // Width and height, then 4 bytes a pixel.
+      if (size < 8 ||
+          uint64_t{GetLE32(bytes, at)} * GetLE32(bytes, at + 4) * 4 != uint64_t{size} - 8)
+        throw malformed();
+    } else if (type == "stringvector") {
+      // Strings, each a length and its characters.
+      for (size_t c = at; c < end; c += 4 + GetLE32(bytes, c))
+        if (end - c < 4 || GetLE32(bytes, c) > end - c - 4) throw malformed();
+    } else if (type == "floatvector") {
+      if (size % 4 != 0) throw malformed();
+    } else if (type == "idmanifest") {
+      throw refuse("attribute " + attribute + ": an ID manifest, which lutbake does not read");
+    }
+    if (attribute == "dataWindow" && type == "box2i") {
+      const auto corner = [&](int i) { return static_cast<int32_t>(GetLE32(bytes, at + 4 * i)); };
+      width = static_cast<long>(corner(2)) - corner(0) + 1;
+      height = static_cast<long>(corner(3)) - corner(1) + 1;
+    }
+    at = end;
+  }
+  if (width < 1 || height < 1 || width > (1 << 16) || height > (1 << 16))
+    throw refuse("image size " + std::to_string(width) + " x " + std::to_string(height) +
+                 " is not a lutbake table");
+  constexpr uintmax_t kMaxCompressionRatio = 2048;
+  const uintmax_t pixelBytes = static_cast<uintmax_t>(width) * height * channels * 4;
+  if (pixelBytes > kMaxCompressionRatio * bytes.size())
+    throw refuse("an image of " + std::to_string(width) + " x " + std::to_string(height) + " in " +
+                 std::to_string(channels) + " channels cannot be held in " +
+                 std::to_string(bytes.size()) + " bytes");
+}
+
+}  // namespace
+
 Table ReadExrTable(const std::string &path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("cannot open " + path);
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  CheckExrHeader(path, bytes);
   Table table;
   try {
-    Imf::InputFile file(path.c_str());
+    Imf::StdISStream stream;
+    stream.str(bytes);
+    Imf::InputFile file(stream);
     const Imf::Header &header = file.header();
     for (auto it = header.begin(); it != header.end(); ++it) {
       if (const auto *s = dynamic_cast<const Imf::StringAttribute *>(&it.attribute()))
@@ -165,6 +303,13 @@ HeaderValues ReadHeaderValues(const std::string &path) {
   if (open == std::string::npos || close == std::string::npos || close < open)
     throw IoError(path + ": kValues has no initialiser");
   const size_t expected = static_cast<size_t>(width) * height * depth * channels;
+  // Each value takes at least one character of the initialiser: a header
+  // whose sizes claim more values than that is refused before anything is
+  // reserved for them (the sizes alone allow 2^49 values).
+  if (expected > close - open)
+    throw IoError(path + ": kValues's initialiser has " + std::to_string(close - open) +
+                  " characters, too few for the " + std::to_string(expected) +
+                  " values its sizes say");
   out.values.reserve(expected);
   const char *p = text.c_str() + open + 1;
   const char *last = text.c_str() + close;

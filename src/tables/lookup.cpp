@@ -11,7 +11,10 @@ void LookupCoordinate(const Axis &axis, double value, int *i0, double *w) {
     *w = 0.0;
     return;
   }
-  const double t = std::clamp(axis.TexelCoordinate(value), 0.0, axis.count - 1.0);
+  // A NaN coordinate (a NaN value asked for) is read at the first texel:
+  // std::clamp passes NaN through, and its cast to int is undefined.
+  const double coordinate = axis.TexelCoordinate(value);
+  const double t = std::isnan(coordinate) ? 0.0 : std::clamp(coordinate, 0.0, axis.count - 1.0);
   const int i = std::min(static_cast<int>(t), axis.count - 2);
   *i0 = i;
   *w = t - i;

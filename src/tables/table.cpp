@@ -78,7 +78,11 @@ bool ParseAxisDescription(const std::string &text, Axis *axis) {
   if (end == p || std::strcmp(end, " texels") != 0 || count < 1 || count > kMaxCount) return false;
   const std::string name = text.substr(0, space);
   if (space == linear) {
-    if (numbers.size() != 2 || !(numbers[1] > numbers[0])) return false;
+    // A range whose width overflows (-1e308 to 1e308) would give every
+    // lookup a NaN coordinate.
+    if (numbers.size() != 2 || !(numbers[1] > numbers[0]) ||
+        !std::isfinite(numbers[1] - numbers[0]))
+      return false;
     *axis = LinearAxis(name, numbers[0], numbers[1], static_cast<int>(count));
     return true;
   }

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <regex>
 
@@ -317,6 +318,18 @@ TEST(Lookup, TexelCentresClampingAndTheMuIntegral) {
                         2.0 * (0.875 * 0.875 * 0.875 - 0.125 * 0.125 * 0.125)) +
                        f(1.0) * (1.0 - 0.875 * 0.875);
   EXPECT_NEAR(LookupMuAverage(t, t.values, r, 0), exact, 1e-14);
+}
+
+TEST(Lookup, NanCoordinateReadsTheFirstTexel) {
+  // Found by the .bin fuzzer (an axis [0, inf] gave NaN coordinates, and
+  // casting NaN to int is undefined): a NaN value asked for reads texel 0.
+  Table t;
+  t.x = LinearAxis("mu", 0.0, 1.0, 4);
+  t.y = LinearAxis("perceptualRoughness", 0.0, 1.0, 3);
+  for (int i = 0; i < 12; ++i) t.values.push_back(i);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(Lookup(t, nan, nan), t.value(0, 0));
+  EXPECT_EQ(Lookup(t, nan, t.y.TexelCenter(2)), t.value(0, 2));
 }
 
 TEST(TableReader, ExrAndHeaderReadBackWhatWasWritten) {

@@ -1,0 +1,95 @@
+#include "app.h"
+
+#include <iostream>
+
+#include "lutbake/tables/bake.h"
+
+namespace lutbake::cli {
+
+std::unique_ptr<LutbakeApp> MakeLutbakeApp() {
+  auto cli = std::make_unique<LutbakeApp>();
+  CLI::App &app = cli->app;
+  app.description(
+      "lutbake: bakes microfacet lookup tables (Kulla-Conty E, E_avg, F_avg and the "
+      "split-sum DFG) with a measured error for every texel.");
+  app.set_version_flag("--version", std::string("lutbake ") + LutbakeVersion());
+  app.require_subcommand(1);
+  app.footer(
+      "Example:\n  lutbake bake --out out          # the four default tables\n"
+      "  lutbake check out              # validate a bake without trusting it\n"
+      "  lutbake plan --scene car.gltf   # what a scene needs, and why\n"
+      "  lutbake eval --table E --mu 0.5 --roughness 0.3\n"
+      "  lutbake report --out report    # error against time of every estimator\n"
+      "  lutbake bake --preset filament --out dfg   # an engine's own table, exact\n"
+      "Run 'lutbake COMMAND --help' (bake, plan, check, eval, report, furnace, presets) for "
+      "their options.");
+  cli->bake = app.add_subcommand("bake", "Bake tables into a directory (EXR, .bin, C++ header)");
+  SetupBakeCommand(*cli->bake, cli->bakeOptions);
+  cli->plan = app.add_subcommand(
+      "plan",
+      "What glTF scenes and manifests need: tables, narrowed ranges, and why the rest is "
+      "left out");
+  SetupPlanCommand(*cli->plan, cli->planOptions);
+  cli->eval = app.add_subcommand(
+      "eval", "Evaluate any table at any points, with the error bound of each value");
+  SetupEvalCommand(*cli->eval, cli->evalOptions);
+  cli->check = app.add_subcommand(
+      "check", "Validate a baked directory against the quadrature, identities and the furnace");
+  SetupCheckCommand(*cli->check, cli->checkOptions);
+  cli->report = app.add_subcommand(
+      "report", "Measure real error against run time for every estimator (csv, md, svg)");
+  SetupReportCommand(*cli->report, cli->reportOptions);
+  cli->furnace = app.add_subcommand(
+      "furnace", "The white furnace of a classic reflection model: albedo, average, pictures");
+  SetupFurnaceCommand(*cli->furnace, cli->furnaceOptions);
+  cli->presets = app.add_subcommand(
+      "presets", "The engine presets of bake --preset: each engine's textures, exact");
+  SetupPresetsCommand(*cli->presets, cli->presetsJson);
+  return cli;
+}
+
+int ReportParseError(LutbakeApp &cli, const CLI::ParseError &e, int argc, const char *const *argv) {
+  CLI::App &app = cli.app;
+  if (dynamic_cast<const CLI::CallForHelp *>(&e) || dynamic_cast<const CLI::CallForAllHelp *>(&e) ||
+      dynamic_cast<const CLI::CallForVersion *>(&e))
+    return app.exit(e);
+  // No command recognised: CLI11 says only that one is required; name
+  // what was given instead and the commands there are.
+  if (app.get_subcommands().empty()) {
+    std::string commands;
+    for (const CLI::App *sub : app.get_subcommands({}))
+      commands += (commands.empty() ? "" : ", ") + sub->get_name();
+    if (argc > 1)
+      std::cerr << "lutbake: '" << argv[1] << "' is not a command; accepted: " << commands << "\n";
+    else
+      std::cerr << "lutbake: a command is required; accepted: " << commands << "\n";
+    std::cerr << "Run 'lutbake COMMAND --help' for the accepted options.\n";
+    return 2;
+  }
+  std::cerr << "lutbake: " << e.what() << "\n";
+  // Name the subcommand being parsed, if any, in the pointer to its help.
+  std::string command = "COMMAND";
+  for (const CLI::App *sub : app.get_subcommands({}))
+    for (int i = 1; i < argc; ++i)
+      if (argv[i] == sub->get_name()) command = sub->get_name();
+  std::cerr << "Run 'lutbake " << command << " --help' for the accepted options.\n";
+  return 2;
+}
+
+int RunParsedCommand(LutbakeApp &cli, const std::string &commandLine) {
+  try {
+    if (cli.bake->parsed()) return RunBake(cli.bakeOptions, commandLine, *cli.bake);
+    if (cli.plan->parsed()) return RunPlan(cli.planOptions);
+    if (cli.eval->parsed()) return RunEval(cli.evalOptions, *cli.eval);
+    if (cli.check->parsed()) return RunCheck(cli.checkOptions);
+    if (cli.report->parsed()) return RunReport(cli.reportOptions);
+    if (cli.furnace->parsed()) return RunFurnace(cli.furnaceOptions, *cli.furnace);
+    if (cli.presets->parsed()) return RunPresets(cli.presetsJson);
+  } catch (const std::exception &e) {
+    std::cerr << "lutbake: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace lutbake::cli

@@ -1,0 +1,45 @@
+// Replays the option fuzzer's corpus (tests/fuzz/corpus/cli: command lines,
+// one argument per line, grown by scripts/fuzz.sh) through the app that
+// main() builds (src/cli/app.h), parsing only: each parses or is refused with
+// CLI11's ParseError, on every test run and without libFuzzer.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "cli/app.h"
+#include "fuzz/cli_input.h"
+
+namespace lutbake {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(FuzzCorpus, CommandLinesParseOrAreRefused) {
+  const fs::path corpus = fs::path(LUTBAKE_TEST_DATA).parent_path() / "fuzz" / "corpus" / "cli";
+  size_t inputs = 0, parsed = 0, refused = 0;
+  for (const auto &entry : fs::directory_iterator(corpus)) {
+    std::ifstream in(entry.path(), std::ios::binary);
+    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::vector<std::string> args = fuzz::CommandLineOf(bytes.data(), bytes.size());
+    std::vector<const char *> argv;
+    for (const std::string &arg : args) argv.push_back(arg.c_str());
+    const auto cli = cli::MakeLutbakeApp();
+    ++inputs;
+    try {
+      cli->app.parse(static_cast<int>(argv.size()), argv.data());
+      ++parsed;
+    } catch (const CLI::ParseError &) {
+      ++refused;
+    }
+  }
+  EXPECT_GE(inputs, 60u);  // the bad-input corpus and the README's examples
+  EXPECT_GT(parsed, 0u);   // the README's examples parse
+  EXPECT_GT(refused, 0u);  // the bad inputs are refused (some only when run)
+}
+
+}  // namespace
+}  // namespace lutbake
