@@ -7,6 +7,7 @@
 // separated by commas and white space.
 #include <Imath/half.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -69,7 +70,9 @@ Table ReadSourceTable(const std::string &path) {
   const size_t expected = static_cast<size_t>(width) * height * depth * channels;
   const char *p = text.c_str() + begin + std::string(source_text::kValuesBegin).size() + 1;
   const char *last = text.c_str() + end;
-  table.values.reserve(expected);
+  // The metadata's sizes are the file's claim: reserve no more than the
+  // block can hold (a value and its separator take at least two characters).
+  table.values.reserve(std::min(expected, static_cast<size_t>(last - p) / 2 + 1));
   while (p < last) {
     while (p < last && (*p == ' ' || *p == '\n' || *p == '\r' || *p == '\t' || *p == ',')) ++p;
     if (p >= last) break;

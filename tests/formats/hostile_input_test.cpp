@@ -120,6 +120,22 @@ TEST(HostileInput, HeaderClaimingMoreValuesThanItsInitialiserHoldsIsRefused) {
   EXPECT_NE(message.find("too few for the 562949953421312 values"), std::string::npos) << message;
 }
 
+TEST(HostileInput, SourceEmbeddingClaimingMoreValuesThanItsBlockHoldsIsRefused) {
+  // 65536 x 65536 texels x 4 channels (2^34 floats, 64 GiB) claimed by the
+  // opening comment, 3 literals written: refused after reading the 3, with
+  // no allocation sized by the claim (ReadSourceTable reserves what the
+  // block's length can hold).
+  const std::string source =
+      "//   table: E\n//   axisX: mu linear [0, 1], 65536 texels\n"
+      "//   axisY: perceptualRoughness linear [0, 1], 65536 texels\n"
+      "//   width: 65536\n//   height: 65536\n//   depth: 1\n//   channels: 4\n"
+      "//   errorStorage: float32\n//\n"
+      "// lutbake-values-begin\n0.5f, 0.25f, 1e-05\n// lutbake-values-end\n";
+  const auto dir = test::FormatTempDir("oversized_source");
+  const std::string message = Refusal(ReadSourceTable, WriteFile(dir / "huge.inc", source));
+  EXPECT_NE(message.find("3 values, 17179869184 expected"), std::string::npos) << message;
+}
+
 // A PNG chunk: length, type, data, CRC-32 of type and data.
 void PutPngChunk(std::string *png, const std::string &type, const std::string &data) {
   PutBE32(png, static_cast<uint32_t>(data.size()));
