@@ -10,9 +10,11 @@
 #   bash scripts/fuzz.sh [SECONDS_PER_TARGET [TARGET...]]   (default 120, all)
 #
 # Targets: scene manifest (glTF/GLB, manifests), bin exr header png ktx2 dds
-# (the table readers, each input written to an in-memory file), cli (the
-# options of bake, plan, eval, check, report and furnace; one argument per
-# line). Inputs named seed-* (tests/fuzz/make_seeds.sh) and regress-* (once
+# source (the table readers, each input written to an in-memory file; source
+# reads every source embedding: .inc, .js/.ts, the shader arrays, c-array
+# and three.js's module), cli (the options of bake, plan, eval, check,
+# report, furnace and presets; one argument per line), preset (the
+# preset.json that `check DIR` reads). Inputs named seed-* (tests/fuzz/make_seeds.sh) and regress-* (once
 # a crash, kept after its fix) stay in the corpus whatever the merge keeps.
 # A crash stops the run and leaves crash-TARGET-* in build-fuzz/; fix it,
 # then copy it into the corpus as regress-*. Each target's last lines
@@ -24,7 +26,7 @@ seconds="${1:-120}"
 shift || true
 targets=("$@")
 if [ "${#targets[@]}" -eq 0 ]; then
-  targets=(scene manifest bin exr header png ktx2 dds cli)
+  targets=(scene manifest bin exr header png ktx2 dds source cli preset)
 fi
 SUDO=""
 if [ "$(id -u)" != 0 ]; then SUDO=sudo; fi
@@ -38,7 +40,8 @@ cmake --build build-fuzz -j"$(nproc)" --target $(printf 'lutbake_%s_fuzzer ' "${
 mkdir -p build-fuzz/logs
 for target in "${targets[@]}"; do
   case "$target" in
-    scene | manifest) dict=json.dict max_len=8192 ;;
+    scene | manifest | preset) dict=json.dict max_len=8192 ;;
+    source) dict=source.dict max_len=16384 ;;
     exr) dict=exr.dict max_len=16384 ;;
     header) dict=header.dict max_len=16384 ;;
     cli) dict=cli.dict max_len=512 ;;

@@ -4,12 +4,14 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <system_error>
 
 #include "cli_util.h"
 #include "interrupt.h"
@@ -198,24 +200,53 @@ Table ReadPresetFile(const std::string &format, const std::string &path) {
 
 }  // namespace
 
-int CheckPresetDirectory(const std::string &dir, bool json) {
-  const std::filesystem::path manifestPath = std::filesystem::path(dir) / "preset.json";
+PresetListing ReadPresetListing(const std::string &manifestPath) {
+  constexpr std::uintmax_t kMaxBytes = std::uintmax_t{16} << 20;
+  std::error_code error;
+  const std::uintmax_t bytes = std::filesystem::file_size(manifestPath, error);
+  if (error) throw IoError(manifestPath + ": cannot read (" + error.message() + ")");
+  if (bytes > kMaxBytes)
+    throw IoError(manifestPath + ": " + std::to_string(bytes) +
+                  " bytes; a preset.json is accepted up to 16 MiB");
   nlohmann::json manifest;
   try {
-    std::ifstream in(manifestPath);
+    std::ifstream in(manifestPath, std::ios::binary);
+    if (!in) throw IoError("cannot open");
     manifest = nlohmann::json::parse(in);
   } catch (const std::exception &e) {
-    std::cerr << "lutbake check: " << manifestPath.string() << ": not JSON (" << e.what() << ")\n";
+    throw IoError(manifestPath + ": not JSON (" + e.what() + ")");
+  }
+  PresetListing listing;
+  if (manifest.is_object() && manifest.contains("preset") && manifest["preset"].is_string())
+    listing.preset = FindPreset(manifest["preset"].get<std::string>());
+  if (!listing.preset || !manifest.contains("files") || !manifest["files"].is_array())
+    throw IoError(manifestPath + ": 'preset' must name one of " + PresetNameList() +
+                  " and 'files' list its files");
+  for (const nlohmann::json &f : manifest["files"]) {
+    if (!f.is_object() || !f.contains("file") || !f["file"].is_string() ||
+        !f.contains("errorMax") || !f["errorMax"].is_number())
+      throw IoError(manifestPath +
+                    ": every entry of 'files' must be an object with a string 'file' and a "
+                    "number 'errorMax'");
+    const double errorMax = f["errorMax"].get<double>();
+    if (!(errorMax >= 0.0 && errorMax <= 1.0))
+      throw IoError(manifestPath + ": errorMax of " + f["file"].get<std::string>() +
+                    " is not in [0, 1]");
+    listing.errorMaxByFile[f["file"].get<std::string>()] = errorMax;
+  }
+  return listing;
+}
+
+int CheckPresetDirectory(const std::string &dir, bool json) {
+  const std::string manifestPath = (std::filesystem::path(dir) / "preset.json").string();
+  PresetListing listing;
+  try {
+    listing = ReadPresetListing(manifestPath);
+  } catch (const IoError &e) {
+    std::cerr << "lutbake check: " << e.what() << "\n";
     return 2;
   }
-  const Preset *preset = manifest.contains("preset") && manifest["preset"].is_string()
-                             ? FindPreset(manifest["preset"].get<std::string>())
-                             : nullptr;
-  if (!preset || !manifest.contains("files") || !manifest["files"].is_array()) {
-    std::cerr << "lutbake check: " << manifestPath.string() << ": 'preset' must name one of "
-              << PresetNameList() << " and 'files' list its files\n";
-    return 2;
-  }
+  const Preset *preset = listing.preset;
   nlohmann::ordered_json report;
   report["preset"] = preset->name;
   report["files"] = nlohmann::ordered_json::array();
@@ -225,13 +256,11 @@ int CheckPresetDirectory(const std::string &dir, bool json) {
     entry["file"] = texture.file;
     std::string problem;
     double worst = 0.0, errorMax = 0.0;
-    const nlohmann::json *listed = nullptr;
-    for (const auto &f : manifest["files"])
-      if (f.contains("file") && f["file"] == texture.file) listed = &f;
     try {
-      if (!listed || !(*listed).contains("errorMax") || !(*listed)["errorMax"].is_number())
+      const auto listed = listing.errorMaxByFile.find(texture.file);
+      if (listed == listing.errorMaxByFile.end())
         throw IoError("not listed in preset.json with its errorMax");
-      errorMax = (*listed)["errorMax"].get<double>();
+      errorMax = listed->second;
       const Table stored =
           ReadPresetFile(texture.format, (std::filesystem::path(dir) / texture.file).string());
       const Table exact = BakePresetTexture(texture, preset->name);

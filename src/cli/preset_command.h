@@ -3,9 +3,11 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <map>
 #include <string>
 
 #include "bake_command.h"
+#include "lutbake/presets/preset.h"
 
 namespace lutbake::cli {
 
@@ -15,6 +17,19 @@ std::vector<std::string> PresetNames();
 // Bakes o.preset into o.outDir; `app` is the bake subcommand, to refuse the
 // options a preset fixes. Returns the exit status.
 int RunPresetBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app);
+
+// What `check` takes from a preset directory's preset.json: the preset it
+// names, and the errorMax stated for each file it lists.
+struct PresetListing {
+  const Preset *preset = nullptr;
+  std::map<std::string, double> errorMaxByFile;
+};
+
+// Reads `manifestPath` (at most 16 MiB of JSON): "preset" must name a
+// preset, "files" must be an array of objects whose "file" is a string and
+// "errorMax" a number in [0, 1]; other members are ignored. Throws IoError
+// naming the file and what is accepted.
+PresetListing ReadPresetListing(const std::string &manifestPath);
 
 // `lutbake check DIR` where DIR holds a preset.json: every file it lists is
 // read back, its size and channels compared with preset.json, and every

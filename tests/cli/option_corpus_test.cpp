@@ -1,7 +1,9 @@
 // Replays the option fuzzer's corpus (tests/fuzz/corpus/cli: command lines,
 // one argument per line, grown by scripts/fuzz.sh) through the app that
 // main() builds (src/cli/app.h), parsing only: each parses or is refused with
-// CLI11's ParseError, on every test run and without libFuzzer.
+// CLI11's ParseError, on every test run and without libFuzzer. And the
+// preset.json fuzzer's corpus (tests/fuzz/corpus/preset) through
+// ReadPresetListing: each is read or refused with an IoError naming it.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -11,7 +13,9 @@
 #include <vector>
 
 #include "cli/app.h"
+#include "cli/preset_command.h"
 #include "fuzz/cli_input.h"
+#include "lutbake/formats/writer.h"
 
 namespace lutbake {
 namespace {
@@ -39,6 +43,26 @@ TEST(FuzzCorpus, CommandLinesParseOrAreRefused) {
   EXPECT_GE(inputs, 60u);  // the bad-input corpus and the README's examples
   EXPECT_GT(parsed, 0u);   // the README's examples parse
   EXPECT_GT(refused, 0u);  // the bad inputs are refused (some only when run)
+}
+
+TEST(FuzzCorpus, PresetListingsAreReadOrRefused) {
+  const fs::path corpus = fs::path(LUTBAKE_TEST_DATA).parent_path() / "fuzz" / "corpus" / "preset";
+  size_t inputs = 0, read = 0;
+  for (const auto &entry : fs::directory_iterator(corpus)) {
+    ++inputs;
+    const std::string path = entry.path().string();
+    try {
+      const cli::PresetListing listing = cli::ReadPresetListing(path);
+      EXPECT_NE(listing.preset, nullptr) << path;
+      for (const auto &[file, errorMax] : listing.errorMaxByFile)
+        EXPECT_TRUE(errorMax >= 0.0 && errorMax <= 1.0) << path << ": " << file;
+      ++read;
+    } catch (const IoError &e) {
+      EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_GE(inputs, 5u);  // the seeds: preset.json of several presets
+  EXPECT_GT(read, 0u);    // the seeds are read
 }
 
 }  // namespace

@@ -1,10 +1,10 @@
 // Replays the table readers' fuzz corpora (tests/fuzz/corpus/{bin,exr,
-// header,png,ktx2,dds}, grown by scripts/fuzz.sh and kept minimal with
+// header,png,ktx2,dds,source}, grown by scripts/fuzz.sh and kept minimal with
 // -merge=1) on every test run, without clang or libFuzzer: each kept input,
 // the once-crashing ones included, is read or refused with an IoError that
 // names the file, and what is read has the shape its axes say. The scene and
 // manifest corpora are replayed by tests/plans/fuzz_corpus_test.cpp, the
-// option parsing's by tests/cli/option_corpus_test.cpp.
+// option parsing's and preset.json's by tests/cli/option_corpus_test.cpp.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -72,6 +72,10 @@ TEST(FuzzCorpus, Ktx2InputsAreReadOrRefused) {
 
 TEST(FuzzCorpus, DdsInputsAreReadOrRefused) {
   EXPECT_GT(Replay("dds", ReadDdsTable, TableShapeHolds), 0u);
+}
+
+TEST(FuzzCorpus, SourceEmbeddingInputsAreReadOrRefused) {
+  EXPECT_GT(Replay("source", ReadSourceTable, TableShapeHolds), 0u);
 }
 
 TEST(FuzzCorpus, HeaderInputsAreReadOrRefused) {

@@ -12,7 +12,7 @@ lutbake="$1"
 corpus=tests/fuzz/corpus
 scratch="$(mktemp -d)"
 trap 'rm -rf "$scratch"' EXIT
-mkdir -p "$corpus"/{bin,exr,header,png,ktx2,dds,cli}
+mkdir -p "$corpus"/{bin,exr,header,png,ktx2,dds,source,cli,preset}
 
 # 1D, 2D, two-channel and 3D tables, small and fast; PNG holds only values
 # in [0, 1], which these are.
@@ -49,6 +49,20 @@ for half in ktx2-half dds-half; do
     cp "$file" "$corpus/${half%-half}/seed-$half-$(basename "$file")"
   done
 done
+
+# Every source embedding (one table per run: the float32 and binary16 forms
+# share a name), and the preset.json of the presets that bake in a second.
+for format in inc inc-half js js-half ts-half glsl-array hlsl-array wgsl-array msl-array; do
+  bake "src-$format" --tables E,glass_E --format "$format"
+  for file in "$scratch/src-$format"/*; do
+    cp "$file" "$corpus/source/seed-$format-$(basename "$file")"
+  done
+done
+for preset in unreal godot cycles eevee threejs; do
+  "$lutbake" bake --preset "$preset" --out "$scratch/preset-$preset" >/dev/null
+  cp "$scratch/preset-$preset/preset.json" "$corpus/preset/seed-$preset.json"
+done
+cp "$scratch/preset-cycles/table_ggx_E.h" "$corpus/source/seed-cycles-table_ggx_E.h"
 
 python3 - "$corpus/cli" <<'PY'
 import re, shlex, sys
