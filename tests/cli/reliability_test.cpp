@@ -24,6 +24,7 @@
 #include <thread>
 #include <vector>
 
+#include "cli/preset_command.h"
 #include "lutbake/formats/atomic_output.h"
 #include "lutbake/formats/binary_format.h"
 #include "lutbake/formats/table_reader.h"
@@ -126,6 +127,27 @@ std::vector<std::string> SmallSet(const fs::path &out, int seed, int size = 16) 
 }
 constexpr size_t kSmallSetFiles = 4 * 4 + 1;
 
+// The set the kills interrupt: the same four tables in every format (one
+// of each file name: png16, not png8; the binary16 forms of dds and js) and
+// the shader functions in every language: 4 x 14 table files, kulla_conty.h
+// and lutbake.{glsl,hlsl,wgsl,metal}.
+std::vector<std::string> EveryFormatSet(const fs::path &out, int seed) {
+  std::vector<std::string> args = SmallSet(out, seed);
+  for (size_t i = 0; i + 1 < args.size(); ++i)
+    if (args[i] == "--format")
+      args[i + 1] =
+          "exr,bin,header,png16,ktx2,dds-half,inc,js-half,ts,glsl-array,hlsl-array,wgsl-array,"
+          "msl-array";
+  args.insert(args.end(), {"--shader", "glsl,hlsl,wgsl,msl"});
+  return args;
+}
+constexpr size_t kEveryFormatSetFiles = 4 * 14 + 1 + 4;
+
+bool EndsWith(const std::string &text, const std::string &suffix) {
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
 // A bake that runs about a second (dfg 512 x 512 by the quadrature on one
 // thread), to signal or disturb while it runs.
 std::vector<std::string> LongBake(const fs::path &out) {
@@ -143,15 +165,20 @@ std::string RunOf(const fs::path &file) {
       if (key == "commandLine") return value;
     throw lutbake::IoError(path + ": no commandLine");
   };
-  if (name.size() > 4 && name.substr(name.size() - 4) == ".exr")
-    return find(lutbake::ReadExrTable(path).metadata);
-  if (name.size() > 4 && name.substr(name.size() - 4) == ".bin")
-    return find(lutbake::ReadBinaryTable(path).metadata);
-  if (name.rfind("kulla_conty", 0) == 0) {
-    // Functions, no table: its comment and its closing line.
+  if (EndsWith(name, ".exr")) return find(lutbake::ReadExrTable(path).metadata);
+  if (EndsWith(name, ".bin")) return find(lutbake::ReadBinaryTable(path).metadata);
+  if (EndsWith(name, ".png")) return find(lutbake::ReadPngTable(path).metadata);
+  if (EndsWith(name, ".ktx2")) return find(lutbake::ReadKtx2Table(path).metadata);
+  if (EndsWith(name, ".dds")) return find(lutbake::ReadDdsTable(path).metadata);
+  const bool functions = name.rfind("kulla_conty", 0) == 0 || name.rfind("lutbake.", 0) == 0;
+  if (!functions && !EndsWith(name, ".h"))
+    return find(lutbake::ReadSourceTable(path).metadata);  // .inc .js .ts .glsl ...
+  if (functions) {
+    // Functions, no table: its comment and its closing line (the shader
+    // files end with a function's closing brace).
     const std::string text = ReadAll(file);
     if (text.find("#endif") == std::string::npos &&
-        text.find("}  // namespace") == std::string::npos)
+        text.find("}  // namespace") == std::string::npos && !EndsWith(text, "}\n\n"))
       throw lutbake::IoError(path + ": truncated");
     const std::string key = "//   commandLine: ";
     const size_t at = text.find(key);
@@ -197,34 +224,96 @@ TEST(Reliability, FiftyFiveKillsNeverLeaveATornOrMixedSet) {
   // An uninterrupted run: its duration spreads the kills, and its files
   // are the first "previous set".
   auto start = Clock::now();
-  ASSERT_EQ(WaitFor(Spawn(SmallSet(out, 0), log), std::chrono::seconds(60)), 0) << ReadAll(log);
+  ASSERT_EQ(WaitFor(Spawn(EveryFormatSet(out, 0), log), std::chrono::seconds(60)), 0)
+      << ReadAll(log);
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   size_t temporaries = 0;
-  ASSERT_EQ(ExpectOneRun(out, "first run", &temporaries), kSmallSetFiles);
+  ASSERT_EQ(ExpectOneRun(out, "first run", &temporaries), kEveryFormatSetFiles);
   std::mt19937 random(18);
   std::uniform_real_distribution<double> moment(0.0, 1.1 * seconds);
   std::map<std::string, int> seen;  // what the kills left
   for (int kill = 1; kill <= 55; ++kill) {
-    const pid_t pid = Spawn(SmallSet(out, kill), log);
+    const pid_t pid = Spawn(EveryFormatSet(out, kill), log);
     std::this_thread::sleep_for(std::chrono::duration<double>(moment(random)));
     ::kill(pid, SIGKILL);
     const int status = WaitFor(pid, std::chrono::seconds(60));
     const std::string context = "kill " + std::to_string(kill);
     const size_t finals = ExpectOneRun(out, context, &temporaries);
     ++seen[std::string(WIFSIGNALED(status) ? "killed" : "finished") +
-           (finals == kSmallSetFiles ? ", whole set" : ", part of a set") +
+           (finals == kEveryFormatSetFiles ? ", whole set" : ", part of a set") +
            (temporaries > 0 ? ", temporaries" : "")];
     if (::testing::Test::HasFailure()) break;
   }
   // The next run in the same directory: succeeds, one whole set, nothing else.
-  ASSERT_EQ(WaitFor(Spawn(SmallSet(out, 99), log), std::chrono::seconds(60)), 0) << ReadAll(log);
-  EXPECT_EQ(ExpectOneRun(out, "after the kills", &temporaries), kSmallSetFiles);
+  ASSERT_EQ(WaitFor(Spawn(EveryFormatSet(out, 99), log), std::chrono::seconds(60)), 0)
+      << ReadAll(log);
+  EXPECT_EQ(ExpectOneRun(out, "after the kills", &temporaries), kEveryFormatSetFiles);
   EXPECT_EQ(temporaries, 0u);
   EXPECT_NE(RunOf(out / "E.exr").find("--seed 99"), std::string::npos);
   std::string summary;
   for (const auto &[what, count] : seen)
     summary += "  " + what + ": " + std::to_string(count) + "\n";
   std::printf("one bake %.3f s; 55 kills left:\n%s", seconds, summary.c_str());
+  fs::remove_all(out);
+  fs::remove(log);
+}
+
+// The kills again on a preset bake (Cycles: two C arrays and preset.json,
+// written as one set): preset.json always parses and names the run that
+// wrote both arrays beside it. The runs differ by --threads, which changes
+// nothing in the values but is recorded in the command line.
+TEST(Reliability, KillsDuringAPresetBakeNeverLeaveAMixedSet) {
+  const fs::path out = lutbake::test::Scratch("preset_kills");
+  const fs::path log = out.string() + ".log";
+  const auto run = [&](int threads) {
+    return std::vector<std::string>{
+        "bake", "--preset", "cycles", "--out", out.string(), "--threads", std::to_string(threads)};
+  };
+  const auto expectOneRun = [&](const std::string &context) {
+    std::string recorded;
+    size_t finals = 0;
+    for (const auto &entry : fs::directory_iterator(out)) {
+      const std::string name = entry.path().filename().string();
+      EXPECT_FALSE(lutbake::IsTemporaryName(name)) << context << ": temporary left: " << name;
+      if (lutbake::IsTemporaryName(name)) continue;
+      ++finals;
+      std::string of;
+      try {
+        if (name == "preset.json") {
+          lutbake::cli::ReadPresetListing(entry.path().string());  // whole JSON
+          const std::string text = ReadAll(entry.path()), key = "\"commandLine\": \"";
+          const size_t at = text.find(key);
+          if (at != std::string::npos)
+            of = text.substr(at + key.size(), text.find('"', at + key.size()) - at - key.size());
+        } else {
+          for (const auto &[k, v] : lutbake::ReadSourceTable(entry.path().string()).metadata)
+            if (k == "commandLine") of = v;
+        }
+      } catch (const std::exception &e) {
+        ADD_FAILURE() << context << ": " << name << " does not parse: " << e.what();
+      }
+      EXPECT_FALSE(of.empty()) << context << ": " << name << " records no command line";
+      if (recorded.empty()) recorded = of;
+      EXPECT_EQ(of, recorded) << context << ": " << name << " belongs to another run";
+    }
+    return finals;
+  };
+  const auto start = Clock::now();
+  ASSERT_EQ(WaitFor(Spawn(run(1), log), std::chrono::seconds(60)), 0) << ReadAll(log);
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  ASSERT_EQ(expectOneRun("first run"), 3u);
+  std::mt19937 random(16);
+  std::uniform_real_distribution<double> moment(0.0, 1.1 * seconds);
+  for (int kill = 1; kill <= 20 && !::testing::Test::HasFailure(); ++kill) {
+    const pid_t pid = Spawn(run(1 + kill % 16), log);
+    std::this_thread::sleep_for(std::chrono::duration<double>(moment(random)));
+    ::kill(pid, SIGKILL);
+    WaitFor(pid, std::chrono::seconds(60));
+    // The directory held a whole set before: it holds one, old or new.
+    EXPECT_EQ(expectOneRun("kill " + std::to_string(kill)), 3u) << "kill " << kill;
+  }
+  ASSERT_EQ(WaitFor(Spawn(run(2), log), std::chrono::seconds(60)), 0) << ReadAll(log);
+  EXPECT_EQ(expectOneRun("after the kills"), 3u);
   fs::remove_all(out);
   fs::remove(log);
 }
