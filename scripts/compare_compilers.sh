@@ -7,12 +7,17 @@
 #
 #   bash scripts/compare_compilers.sh [JOBS]   (default 2)
 #
-# GXX_TREE=build reuses an existing g++ Release tree instead of build-gxx/.
+# GXX_TREE=build reuses an existing g++ tree instead of build-gxx/, and
+# CLANG_TREE=build-asan an existing clang++ one instead of build-clang/:
+# scripts/test_sanitized.sh (the end of scripts/test.sh) compares the g++
+# Release build with its clang++ -O1 AddressSanitizer build, which also runs
+# every bake below under the sanitizers.
 #
-# Takes minutes (two Release builds of the library), so it is not part of
-# ctest; the thread-count half of the determinism claim is
+# Run alone it takes minutes (two Release builds of the library); the
+# thread-count half of the determinism claim is in ctest
 # (tests/cli/determinism_test.cpp). Exit 0 when every file is identical, 1
-# when one differs (each is named).
+# when one differs (each is named). Every run reads the same inputs, so the
+# recorded command lines agree too.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs="${1:-2}"
@@ -21,7 +26,7 @@ for compiler in g++ clang++; do
   command -v "$compiler" >/dev/null || { echo "compare_compilers: $compiler not found" >&2; exit 2; }
 done
 
-declare -A tree=([g++]="${GXX_TREE:-build-gxx}" [clang++]=build-clang)
+declare -A tree=([g++]="${GXX_TREE:-build-gxx}" [clang++]="${CLANG_TREE:-build-clang}")
 for compiler in g++ clang++; do
   dir="${tree[$compiler]}"
   if [ ! -f "$dir/CMakeCache.txt" ]; then
@@ -55,8 +60,16 @@ bakes=(
   "--tables Favg --size 8 --fresnel conductor --format exr,bin,header"
   "--tables Favg --size 8 --fresnel f82 --format exr,bin,header"
   "--size 32 --format exr,bin,header --error-map"
+  "--tables E,Eavg,Favg,dfg,glass_E,sheen_E,sheen_Eavg,f82 --size 8 --eta-size 3 --tolerance 1e-6 --format png8,ktx2-half,dds-half,inc,js-half,ts,glsl-array,hlsl-array,wgsl-array,msl-array --shader glsl,hlsl,wgsl,msl"
+  "--tables E,Eavg,Favg,dfg,glass_E,sheen_E,sheen_Eavg,f82 --size 8 --eta-size 3 --tolerance 1e-6 --format png16,ktx2,dds,inc-half,js,ts-half"
+  "--preset unreal"
+  "--preset godot"
+  "--preset cycles"
+  "--preset eevee"
+  "--preset threejs"
+  "--preset filament-mobile"
 )
-scratch="$root/build-clang/compare"
+scratch="$root/${tree[clang++]}/compare"
 differ=0
 compared=0
 for k in "${!bakes[@]}"; do
@@ -70,14 +83,14 @@ for k in "${!bakes[@]}"; do
   done
   for file in "$scratch/${tree[g++]}/$k/out"/*; do
     name=$(basename "$file")
-    other="$scratch/build-clang/$k/out/$name"
+    other="$scratch/${tree[clang++]}/$k/out/$name"
     compared=$((compared + 1))
     if ! cmp -s "$file" "$other"; then
       echo "DIFFERS: bake ${bakes[$k]}: $name"
       differ=1
     fi
   done
-  if [ "$(ls "$scratch/${tree[g++]}/$k/out")" != "$(ls "$scratch/build-clang/$k/out")" ]; then
+  if [ "$(ls "$scratch/${tree[g++]}/$k/out")" != "$(ls "$scratch/${tree[clang++]}/$k/out")" ]; then
     echo "DIFFERS: bake ${bakes[$k]}: the file lists"
     differ=1
   fi

@@ -70,10 +70,11 @@ TEST(ReferenceIntegrator, AlbedoAverageMatchesIndependentValues) {
     ASSERT_GT(rows.size(), 20u);
     std::vector<size_t> picks = {1, rows.size() / 3, rows.size() / 2, rows.size() - 1};
     std::vector<double> diff(picks.size());
+    const NdfKind ndfKind = kind;  // a lambda captures no structured binding before C++20
     tbb::parallel_for(size_t(0), picks.size(), [&](size_t k) {
       const test::CsvRow &row = rows[picks[k]];
-      const ReferenceAverage r =
-          IntegrateReferenceAlbedoAverage(Ndf{kind, row.Number("alpha")}, SmithForm::kCorrelated);
+      const ReferenceAverage r = IntegrateReferenceAlbedoAverage(Ndf{ndfKind, row.Number("alpha")},
+                                                                 SmithForm::kCorrelated);
       diff[k] = std::abs(r.value - row.Number("Eavg_hc"));
     });
     for (size_t k = 0; k < picks.size(); ++k)
