@@ -9,7 +9,7 @@
 
 #include "fuzz_input.h"
 #include "lutbake/formats/writer.h"
-#include "preset_command.h"
+#include "cli/preset_command.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   static lutbake::fuzz::InputFile file;
