@@ -64,7 +64,7 @@ bakes=(
   "--tables E,Eavg,Favg,dfg,glass_E,sheen_E,sheen_Eavg,f82 --size 8 --eta-size 3 --tolerance 1e-6 --format png16,ktx2,dds,inc-half,js,ts-half"
   "--preset unreal"
   "--preset godot"
-  "--preset cycles"
+  "--preset cycles --files table_ggx_E.h,table_ggx_Eavg.h,table_ggx_glass_E.h"
   "--preset eevee"
   "--preset threejs"
   "--preset filament-mobile"

@@ -3,7 +3,7 @@
 max and RMS difference, and where the max is (README "Engine presets").
 
 Usage:
-    /usr/bin/python3 scripts/measure_peer_presets.py PEER_DIR LUTBAKE
+    /usr/bin/python3 scripts/measure_peer_presets.py PEER_DIR LUTBAKE [CYCLES_DIR]
 
 PEER_DIR holds the peers' tables as CSV (extracted from each project's source, conventions in
 each file's comments; not bundled except the four under tests/data/presets/):
@@ -13,7 +13,10 @@ each file's comments; not bundled except the four under tests/data/presets/):
   filament_dfg_64x64.csv          Filament v1.19.0 dfg.inc, mobile size (tests/data/presets/)
   ibl_brdf_lut_png_website_copy.csv  LearnOpenGL's website ibl_brdf_lut.png (8-bit, 256^2)
   lut_sheen_E_current_1024x1024.csv  glTF Sample Renderer assets/images/lut_sheen_E.png
-A missing file is reported and skipped. Exact values come from LUTBAKE: `eval` (dfg, sheen_E)
+CYCLES_DIR, if given, is the output of `lutbake bake --preset cycles --out CYCLES_DIR`: its
+four glass arrays are compared, value for value in Cycles' own memory order, with Cycles'
+shipped ones in tests/data/glass/peers/ (slice 0, ior = 1, apart). A missing file is reported
+and skipped. Exact values come from LUTBAKE: `eval` (dfg, sheen_E)
 and `furnace` (Schlick-GGX, which eval has no table for) at the peer's own texel coordinates.
 Needs numpy.
 """
@@ -141,6 +144,34 @@ def main():
                      for x in r]
             report(f"glTF Sample Renderer lut_sheen_E.png, every 16th texel ({label})", diffs,
                    where)
+
+
+    if len(sys.argv) > 3:
+        cycles_glass(sys.argv[3])
+
+
+def c_array_values(path):
+    """The literals between a lutbake C array's value markers."""
+    with open(path) as f:
+        text = f.read()
+    block = text.split("// lutbake-values-begin")[1].split("// lutbake-values-end")[0]
+    return [float(v.strip().rstrip("f")) for v in block.replace("\n", " ").split(",") if v.strip()]
+
+
+def cycles_glass(baked):
+    peers = os.path.join(os.path.dirname(__file__), "..", "tests", "data", "glass", "peers")
+    for name in ("glass_E", "glass_inv_E", "glass_Eavg", "glass_inv_Eavg"):
+        ours = c_array_values(os.path.join(baked, f"table_ggx_{name}.h"))
+        r = rows(os.path.join(peers, f"cycles_ggx_{name}.csv"))
+        assert len(ours) == len(r), (name, len(ours), len(r))
+        diffs, where = [], []
+        for k, x in enumerate(r):  # the CSV is in Cycles' memory order
+            if int(x["iz"]) == 0:
+                continue
+            diffs.append(float(x["value"]) - ours[k])
+            mu = f", mu {float(x['mu']):.3g}" if x["mu"] else ""
+            where.append(f"rough {float(x['rough']):.3g}{mu}, ior {float(x['ior']):.4g}")
+        report(f"Cycles table_ggx_{name} ({len(diffs)} texels, the slice ior = 1 apart)", diffs, where)
 
 
 if __name__ == "__main__":

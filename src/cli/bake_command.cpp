@@ -128,6 +128,10 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
                  "format, and DIR/preset.json describing them (lutbake presets lists them)")
       ->type_name("NAME")
       ->check(OneOf(PresetNames()));
+  app.add_option("--files", o.presetFiles,
+                 "With --preset: bake only these of its files, comma-separated (lutbake "
+                 "presets --json lists each preset's files)")
+      ->type_name("FILE,...");
   app.footer(
       "With no option beyond --out, every texel of E, Eavg and dfg is integrated by the "
       "quadrature until its bound is below 1e-8; with the float32 rounding of the stored "
@@ -237,6 +241,11 @@ ProgressFn TerminalProgress(const std::string &name) {
 }  // namespace
 
 int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app) {
+  if (app.count("--files") > 0 && o.preset.empty()) {
+    std::cerr << "lutbake bake: --files chooses files of a preset; it needs --preset NAME ("
+              << PresetNameList() << ")\n";
+    return 2;
+  }
   if (!o.preset.empty()) return RunPresetBake(o, commandLine, app);
   BakeSettings settings;
   settings.ndf = ParseNdf(o.ndf);

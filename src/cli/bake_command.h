@@ -32,7 +32,8 @@ struct BakeOptions {
   bool json = false;
   SceneOptions scene;  // --scene / --manifest: bake a plan
   bool skipUnsupported = false;
-  std::string preset;  // --preset NAME: an engine's textures (preset_command.h)
+  std::string preset;       // --preset NAME: an engine's textures (preset_command.h)
+  std::string presetFiles;  // --files A,B: only these of the preset's files
 };
 
 // Option values (already validated) to library enums; shared with report.

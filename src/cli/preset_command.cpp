@@ -2,6 +2,7 @@
 
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdint>
@@ -64,7 +65,7 @@ int RunPresetBake(const BakeOptions &o, const std::string &commandLine, CLI::App
     if (app.count(flag) > 0) {
       std::cerr << "lutbake bake: " << flag << " cannot be combined with --preset " << o.preset
                 << ": the preset fixes the tables, models, sizes and formats (accepted with "
-                   "--preset: --out, --threads, --json)\n";
+                   "--preset: --out, --threads, --json, --files)\n";
       return 2;
     }
   const Preset *preset = FindPreset(o.preset);
@@ -72,6 +73,31 @@ int RunPresetBake(const BakeOptions &o, const std::string &commandLine, CLI::App
     std::cerr << "lutbake bake: --preset " << o.preset << ": accepted: " << PresetNameList()
               << "\n";
     return 2;
+  }
+  // --files: a subset of the preset's files, in the preset's order.
+  std::vector<const PresetTexture *> textures;
+  if (app.count("--files") > 0) {
+    const std::vector<std::string> wanted = SplitList(o.presetFiles);
+    std::string accepted;
+    for (const PresetTexture &t : preset->textures)
+      accepted += (accepted.empty() ? "" : ", ") + t.file;
+    if (wanted.empty() || std::find(wanted.begin(), wanted.end(), "") != wanted.end()) {
+      std::cerr << "lutbake bake: --files '" << o.presetFiles
+                << "' is empty or has an empty name; the files of --preset " << preset->name << ": "
+                << accepted << "\n";
+      return 2;
+    }
+    for (const std::string &file : wanted)
+      if (std::none_of(preset->textures.begin(), preset->textures.end(),
+                       [&](const PresetTexture &t) { return t.file == file; })) {
+        std::cerr << "lutbake bake: --files: " << file << " is not a file of --preset "
+                  << preset->name << "; accepted: " << accepted << "\n";
+        return 2;
+      }
+    for (const PresetTexture &t : preset->textures)
+      if (std::find(wanted.begin(), wanted.end(), t.file) != wanted.end()) textures.push_back(&t);
+  } else {
+    for (const PresetTexture &t : preset->textures) textures.push_back(&t);
   }
   bool created = false;
   if (const int status = PrepareOutputOrComplain("bake", o.outDir, &created)) return status;
@@ -92,7 +118,8 @@ int RunPresetBake(const BakeOptions &o, const std::string &commandLine, CLI::App
   try {
     AtomicOutputSet output;
     const WriteOptions writeOptions;
-    for (const PresetTexture &texture : preset->textures) {
+    for (const PresetTexture *each : textures) {
+      const PresetTexture &texture = *each;
       const auto textureStart = std::chrono::steady_clock::now();
       Table table = BakePresetTexture(texture, preset->name, &interrupt.token());
       table.metadata.emplace_back("lutbakeVersion", LutbakeVersion());
@@ -115,14 +142,17 @@ int RunPresetBake(const BakeOptions &o, const std::string &commandLine, CLI::App
       f["storage"] = ToString(storage);
       f["width"] = table.width();
       f["height"] = table.height();
+      if (table.is3D()) f["depth"] = table.depth();
       f["channelCount"] = table.channels;
       nlohmann::ordered_json axes = nlohmann::ordered_json::array();
-      static const char *const kWhich[] = {"x", "y"};
+      static const char *const kWhich[] = {"x", "y", "z"};
       for (size_t a = 0; a < texture.axes.size(); ++a)
         axes.push_back(AxisJson(texture.axes[a], kWhich[a]));
       f["axes"] = axes;
-      f["memoryOrder"] =
-          table.is2D() ? "rows of x, y outer; channels interleaved" : "x; channels interleaved";
+      f["memoryOrder"] = table.is3D()   ? "rows of x, then y, slices of z outermost; channels "
+                                          "interleaved"
+                         : table.is2D() ? "rows of x, y outer; channels interleaved"
+                                        : "x; channels interleaved";
       nlohmann::ordered_json channels = nlohmann::ordered_json::array();
       for (size_t c = 0; c < texture.channels.size(); ++c) {
         nlohmann::ordered_json ch;
@@ -138,6 +168,7 @@ int RunPresetBake(const BakeOptions &o, const std::string &commandLine, CLI::App
       model["visibility"] = ToString(texture.model.visibility);
       model["alpha"] = ToString(texture.model.alpha);
       if (texture.model.alphaMin > 0.0) model["alphaMin"] = texture.model.alphaMin;
+      if (texture.model.unitEtaWindow > 0.0) model["unitEtaWindow"] = texture.model.unitEtaWindow;
       for (const PresetChannel &c : texture.channels)
         if (c.meaning == "sheen_E") {
           model["sheenVisibility"] = ToString(texture.model.sheenVisibility);
@@ -154,10 +185,13 @@ int RunPresetBake(const BakeOptions &o, const std::string &commandLine, CLI::App
       manifest["files"].push_back(f);
 
       char line[300];
+      const std::string size = std::to_string(table.width()) + " x " +
+                               std::to_string(table.height()) +
+                               (table.is3D() ? " x " + std::to_string(table.depth()) : "");
       std::snprintf(line, sizeof line,
-                    "%-24s %4d x %-4d %d channel(s) %-8s %7.3f s  error max %.2e (as stored)\n",
-                    texture.file.c_str(), table.width(), table.height(), table.channels,
-                    ToString(storage), seconds, bounds.max);
+                    "%-28s %-13s %d channel(s) %-8s %7.3f s  error max %.2e (as stored)\n",
+                    texture.file.c_str(), size.c_str(), table.channels, ToString(storage), seconds,
+                    bounds.max);
       std::cerr << line;
     }
     const std::string path = (std::filesystem::path(o.outDir) / "preset.json").string();
@@ -250,26 +284,43 @@ int CheckPresetDirectory(const std::string &dir, bool json) {
   nlohmann::ordered_json report;
   report["preset"] = preset->name;
   report["files"] = nlohmann::ordered_json::array();
+  // preset.json lists what the bake wrote: every file of the preset, or
+  // those --files chose. Each listed file must be one of the preset's.
+  for (const auto &listed : listing.errorMaxByFile) {
+    const std::string &file = listed.first;  // (clang 14 captures no structured binding)
+    if (std::none_of(preset->textures.begin(), preset->textures.end(),
+                     [&](const PresetTexture &t) { return t.file == file; })) {
+      std::cerr << "lutbake check: " << manifestPath << " lists " << file
+                << ", which is not a file of preset " << preset->name << "\n";
+      return 2;
+    }
+  }
+  if (listing.errorMaxByFile.empty()) {
+    std::cerr << "lutbake check: " << manifestPath << " lists no file\n";
+    return 2;
+  }
   bool allPass = true;
   for (const PresetTexture &texture : preset->textures) {
+    const auto listed = listing.errorMaxByFile.find(texture.file);
+    if (listed == listing.errorMaxByFile.end()) continue;  // not baked (--files)
     nlohmann::ordered_json entry;
     entry["file"] = texture.file;
     std::string problem;
     double worst = 0.0, errorMax = 0.0;
     try {
-      const auto listed = listing.errorMaxByFile.find(texture.file);
-      if (listed == listing.errorMaxByFile.end())
-        throw IoError("not listed in preset.json with its errorMax");
       errorMax = listed->second;
       const Table stored =
           ReadPresetFile(texture.format, (std::filesystem::path(dir) / texture.file).string());
       const Table exact = BakePresetTexture(texture, preset->name);
-      if (stored.width() != exact.width() || stored.height() * stored.depth() != exact.height() ||
+      if (stored.width() != exact.width() ||
+          stored.height() * stored.depth() != exact.height() * exact.depth() ||
           stored.values.size() != exact.values.size())
         throw IoError("holds " + std::to_string(stored.width()) + " x " +
-                      std::to_string(stored.height()) + " x " + std::to_string(stored.channels) +
-                      " values; the preset has " + std::to_string(exact.width()) + " x " +
-                      std::to_string(exact.height()) + " x " + std::to_string(exact.channels));
+                      std::to_string(stored.height() * stored.depth()) + " x " +
+                      std::to_string(stored.channels) + " values; the preset has " +
+                      std::to_string(exact.width()) + " x " +
+                      std::to_string(exact.height() * exact.depth()) + " x " +
+                      std::to_string(exact.channels));
       // PNG and KTX2 keep two channels as RGB / RG: compare the ones both hold.
       for (size_t i = 0; i < exact.values.size(); ++i) {
         const double d = std::abs(stored.values[i] - exact.values[i]);

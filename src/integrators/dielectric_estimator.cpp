@@ -9,8 +9,8 @@ namespace {
 void CheckArguments(double alpha, double eta) {
   if (!(alpha > 0.0 && alpha <= 1.0))
     throw std::invalid_argument("dielectric estimator: alpha must lie in (0, 1]");
-  if (!(eta >= 1.0 / 16.0 && eta <= 16.0))
-    throw std::invalid_argument("dielectric estimator: eta must lie in [1/16, 16]");
+  if (!(eta >= kMinRelativeIor && eta <= kMaxRelativeIor))
+    throw std::invalid_argument("dielectric estimator: eta must lie in [1/128, 128]");
 }
 
 // The facet weight of a visible normal sampled from (u0, u1) for the view

@@ -45,8 +45,8 @@ void CheckArguments(double alpha, double mu_o, double eta, double tolerance) {
     throw std::invalid_argument("dielectric albedo: alpha must lie in [0, 1]");
   if (!(mu_o >= 0.0 && mu_o <= 1.0))
     throw std::invalid_argument("dielectric albedo: mu_o must lie in [0, 1]");
-  if (!(eta >= 1.0 / 16.0 && eta <= 16.0))
-    throw std::invalid_argument("dielectric albedo: eta must lie in [1/16, 16]");
+  if (!(eta >= kMinRelativeIor && eta <= kMaxRelativeIor))
+    throw std::invalid_argument("dielectric albedo: eta must lie in [1/128, 128]");
   if (!(tolerance > 0.0))
     throw std::invalid_argument("dielectric albedo: tolerance must be positive");
 }

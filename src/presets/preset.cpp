@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "lutbake/formats/writer.h"
@@ -22,6 +23,7 @@ const char *ToString(PresetMapping mapping) {
     case PresetMapping::kLinear: return "u";
     case PresetMapping::kSquare: return "u^2";
     case PresetMapping::kOneMinusSquare: return "1 - u^2";
+    case PresetMapping::kIorOfF0Root4: return "(1 + u^2) / (1 - u^2)";
   }
   return "?";
 }
@@ -55,6 +57,10 @@ double PresetAxis::Quantity(int i) const {
   double q = u;
   if (mapping == PresetMapping::kSquare) q = u * u;
   if (mapping == PresetMapping::kOneMinusSquare) q = 1.0 - u * u;
+  // (1 + u^2) / (1 - u^2), the IOR of F0 = u^4; 1 - u^2 = (1 - u)(1 + u)
+  // without cancellation. u = 1 gives +infinity, which the clamp bounds.
+  if (mapping == PresetMapping::kIorOfF0Root4)
+    q = u < 1.0 ? (1.0 + u * u) / ((1.0 - u) * (1.0 + u)) : std::numeric_limits<double>::infinity();
   return std::clamp(q, lowest, highest);
 }
 
@@ -77,7 +83,7 @@ constexpr double kSheenBTolerance = 1e-7;
 
 struct Needs {
   bool splitSum = false, sheen = false, sheenB = false, f82 = false, average = false;
-  bool disney = false;
+  bool disney = false, glass = false, glassAverage = false;
 };
 
 Needs NeedsOf(const PresetTexture &texture) {
@@ -95,6 +101,10 @@ Needs NeedsOf(const PresetTexture &texture) {
       needs.average = true;
     else if (c.meaning == "disney_diffuse")
       needs.disney = true;
+    else if (c.meaning == "glass_E")
+      needs.glass = true;
+    else if (c.meaning == "glass_Eavg")
+      needs.glassAverage = true;
     else if (c.meaning != "one" && c.meaning != "zero" && c.meaning != "fabric_lambert")
       throw std::invalid_argument("preset channel '" + c.meaning + "' is not known");
   }
@@ -175,17 +185,23 @@ PointValue DisneyDiffuseAlbedo(double mu_o, double p) {
 
 Table BakePresetTexture(const PresetTexture &texture, const std::string &presetName,
                         const CancellationToken *cancellation) {
-  if (texture.axes.empty() || texture.axes.size() > 2)
-    throw std::invalid_argument(texture.file + ": a preset texture has one or two axes");
+  if (texture.axes.empty() || texture.axes.size() > 3)
+    throw std::invalid_argument(texture.file + ": a preset texture has one to three axes");
   const Needs needs = NeedsOf(texture);
-  int muAxis = -1, roughnessAxis = -1;
+  int muAxis = -1, roughnessAxis = -1, etaAxis = -1;
   for (size_t a = 0; a < texture.axes.size(); ++a) {
-    if (texture.axes[a].quantity == "mu") muAxis = static_cast<int>(a);
-    if (texture.axes[a].quantity == "roughness") roughnessAxis = static_cast<int>(a);
+    const std::string &quantity = texture.axes[a].quantity;
+    if (quantity == "mu") muAxis = static_cast<int>(a);
+    if (quantity == "roughness") roughnessAxis = static_cast<int>(a);
+    if (quantity == "eta" || quantity == "1/eta") etaAxis = static_cast<int>(a);
   }
-  if (roughnessAxis < 0 || (muAxis < 0 && !needs.average))
+  const bool averaged = needs.average || needs.glassAverage;
+  if (roughnessAxis < 0 || (muAxis < 0 && !averaged))
     throw std::invalid_argument(texture.file +
                                 ": a preset texture needs its mu and roughness axes");
+  if ((needs.glass || needs.glassAverage) != (etaAxis >= 0))
+    throw std::invalid_argument(texture.file +
+                                ": the glass channels, and only they, take an eta axis");
 
   Table table;
   table.name = texture.file.substr(0, texture.file.find('.'));
@@ -202,6 +218,8 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
   table.x = tableAxis(texture.axes[0], texture.axes[0].reversed ? "1-u" : "u");
   if (texture.axes.size() > 1)
     table.y = tableAxis(texture.axes[1], texture.axes[1].reversed ? "1-v" : "v");
+  if (texture.axes.size() > 2)
+    table.z = tableAxis(texture.axes[2], texture.axes[2].reversed ? "1-w" : "w");
   table.channels = static_cast<int>(texture.channels.size());
   static const char *const kNames[] = {"R", "G", "B", "A"};
   for (int c = 0; c < table.channels; ++c) table.channelNames.push_back(kNames[c % 4]);
@@ -209,98 +227,127 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
   table.errors.assign(table.values.size(), 0.0);
 
   const PresetModel &model = texture.model;
-  const int width = table.width(), height = table.height();
-  // The texel in memory at (ix, iy) holds the axis texel i = ix, or N - 1 -
-  // ix when the axis runs from u = 1.
+  const int width = table.width(), height = table.height(), depth = table.depth();
+  // The texel in memory at (ix, iy, iz) holds the axis texel i = ix, or N -
+  // 1 - ix when the axis runs from u = 1.
   const auto axisTexel = [](const PresetAxis &axis, int index) {
     return axis.reversed ? axis.count - 1 - index : index;
   };
-  tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int> &rows) {
-    for (int iy = rows.begin(); iy != rows.end(); ++iy) {
-      if (cancellation) cancellation->ThrowIfCancelled();
-      for (int ix = 0; ix < width; ++ix) {
-        const int index[2] = {ix, iy};
-        const PresetAxis &ra = texture.axes[static_cast<size_t>(roughnessAxis)];
-        const double roughness = ra.Quantity(axisTexel(ra, index[roughnessAxis]));
-        double mu = 0.0;
-        if (muAxis >= 0) {
-          const PresetAxis &ma = texture.axes[static_cast<size_t>(muAxis)];
-          mu = ma.Quantity(axisTexel(ma, index[muAxis]));
-        }
-        const double alpha = AlphaOf(model.alpha, roughness, model.alphaMin);
-        PointValue split, sheen, sheenB, f82, average, disney;
-        if (needs.sheenB) {
-          const double sheenAlpha =
-              model.sheenAlpha == PresetAlpha::kSquared ? roughness * roughness : roughness;
-          const SheenIntegral b = IntegrateSheenSchlickWeightedAdaptive(
-              model.sheenVisibility, sheenAlpha, mu, kSheenBTolerance);
-          sheenB.value[0] = b.value;
-          sheenB.error[0] = b.bound;
-        }
-        if (needs.disney) disney = DisneyDiffuseAlbedo(mu, roughness);
-        if (needs.splitSum) split = SplitSum(model, mu, alpha);
-        if (needs.sheen) {
-          BakeSettings settings;
-          settings.sheenVisibility = model.sheenVisibility;
-          settings.sheenAlpha = model.sheenAlpha == PresetAlpha::kSquared ? SheenAlpha::kSquared
-                                                                          : SheenAlpha::kLinear;
-          sheen = TableNamed("sheen_E").Evaluate(settings, mu, roughness);
-        }
-        if (needs.f82) {
-          BakeSettings settings;
-          settings.smith = model.visibility == PresetVisibility::kSeparable
-                               ? SmithForm::kSeparable
-                               : SmithForm::kCorrelated;
-          f82 = TableNamed("f82").Evaluate(settings, mu, std::sqrt(alpha));
-        }
-        if (needs.average) {
-          BakeSettings settings;
-          settings.smith = model.visibility == PresetVisibility::kSeparable
-                               ? SmithForm::kSeparable
-                               : SmithForm::kCorrelated;
-          average = TableNamed("Eavg").Evaluate(settings, std::sqrt(alpha), 0.0);
-        }
-        for (int c = 0; c < table.channels; ++c) {
-          const PresetChannel &channel = texture.channels[static_cast<size_t>(c)];
-          double value = 0.0, error = 0.0;
-          if (channel.meaning == "A") {
-            value = split.value[0];
-            error = split.error[0];
-          } else if (channel.meaning == "B") {
-            value = split.value[1];
-            error = split.error[1];
-          } else if (channel.meaning == "E") {
-            value = split.value[0] + split.value[1];
-            error = split.error[0] + split.error[1];
-          } else if (channel.meaning == "sheen_E") {
-            value = sheen.value[0];
-            error = sheen.error[0];
-          } else if (channel.meaning == "f82") {
-            value = f82.value[0];
-            error = f82.error[0];
-          } else if (channel.meaning == "Eavg") {
-            value = average.value[0];
-            error = average.error[0];
-          } else if (channel.meaning == "sheen_B") {
-            value = sheenB.value[0];
-            error = sheenB.error[0];
-          } else if (channel.meaning == "fabric_lambert") {
-            // HDRP's FabricLambertNoPI: lerp(1, 1/2, alpha), alpha = roughness^2.
-            value = 1.0 - 0.5 * alpha;
-          } else if (channel.meaning == "disney_diffuse") {
-            value = disney.value[0];
-            error = disney.error[0];
-          } else if (channel.meaning == "one") {
-            value = 1.0;
+  // One task per row of x; rows of every slice in turn.
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, height * depth), [&](const tbb::blocked_range<int> &rows) {
+        for (int row = rows.begin(); row != rows.end(); ++row) {
+          if (cancellation) cancellation->ThrowIfCancelled();
+          const int iy = row % height, iz = row / height;
+          for (int ix = 0; ix < width; ++ix) {
+            const int index[3] = {ix, iy, iz};
+            const PresetAxis &ra = texture.axes[static_cast<size_t>(roughnessAxis)];
+            const double roughness = ra.Quantity(axisTexel(ra, index[roughnessAxis]));
+            double mu = 0.0, eta = 1.0;
+            if (muAxis >= 0) {
+              const PresetAxis &ma = texture.axes[static_cast<size_t>(muAxis)];
+              mu = ma.Quantity(axisTexel(ma, index[muAxis]));
+            }
+            if (etaAxis >= 0) {
+              const PresetAxis &ea = texture.axes[static_cast<size_t>(etaAxis)];
+              const double q = ea.Quantity(axisTexel(ea, index[etaAxis]));
+              eta = ea.quantity == "1/eta" ? 1.0 / q : q;
+            }
+            const double alpha = AlphaOf(model.alpha, roughness, model.alphaMin);
+            PointValue split, sheen, sheenB, f82, average, disney, glass, glassAverage;
+            if (needs.sheenB) {
+              const double sheenAlpha =
+                  model.sheenAlpha == PresetAlpha::kSquared ? roughness * roughness : roughness;
+              const SheenIntegral b = IntegrateSheenSchlickWeightedAdaptive(
+                  model.sheenVisibility, sheenAlpha, mu, kSheenBTolerance);
+              sheenB.value[0] = b.value;
+              sheenB.error[0] = b.bound;
+            }
+            if (needs.disney) disney = DisneyDiffuseAlbedo(mu, roughness);
+            if (needs.splitSum) split = SplitSum(model, mu, alpha);
+            if (needs.sheen) {
+              BakeSettings settings;
+              settings.sheenVisibility = model.sheenVisibility;
+              settings.sheenAlpha = model.sheenAlpha == PresetAlpha::kSquared ? SheenAlpha::kSquared
+                                                                              : SheenAlpha::kLinear;
+              sheen = TableNamed("sheen_E").Evaluate(settings, mu, roughness);
+            }
+            if (needs.f82) {
+              BakeSettings settings;
+              settings.smith = model.visibility == PresetVisibility::kSeparable
+                                   ? SmithForm::kSeparable
+                                   : SmithForm::kCorrelated;
+              f82 = TableNamed("f82").Evaluate(settings, mu, std::sqrt(alpha));
+            }
+            if (needs.average) {
+              BakeSettings settings;
+              settings.smith = model.visibility == PresetVisibility::kSeparable
+                                   ? SmithForm::kSeparable
+                                   : SmithForm::kCorrelated;
+              average = TableNamed("Eavg").Evaluate(settings, std::sqrt(alpha), 0.0);
+            }
+            if (needs.glass || needs.glassAverage) {
+              BakeSettings settings;
+              settings.smith = model.visibility == PresetVisibility::kSeparable
+                                   ? SmithForm::kSeparable
+                                   : SmithForm::kCorrelated;
+              const bool absent = std::abs(eta - 1.0) < model.unitEtaWindow;
+              // The engine's own index-matched interface: no lobe, albedo 1.
+              if (absent) {
+                glass.value[0] = glassAverage.value[0] = 1.0;
+              } else if (needs.glass) {
+                glass = TableNamed("glass_E").Evaluate3D(settings, mu, std::sqrt(alpha), eta);
+              }
+              if (!absent && needs.glassAverage)
+                glassAverage = TableNamed("glass_Eavg").Evaluate(settings, std::sqrt(alpha), eta);
+            }
+            for (int c = 0; c < table.channels; ++c) {
+              const PresetChannel &channel = texture.channels[static_cast<size_t>(c)];
+              double value = 0.0, error = 0.0;
+              if (channel.meaning == "A") {
+                value = split.value[0];
+                error = split.error[0];
+              } else if (channel.meaning == "B") {
+                value = split.value[1];
+                error = split.error[1];
+              } else if (channel.meaning == "E") {
+                value = split.value[0] + split.value[1];
+                error = split.error[0] + split.error[1];
+              } else if (channel.meaning == "sheen_E") {
+                value = sheen.value[0];
+                error = sheen.error[0];
+              } else if (channel.meaning == "f82") {
+                value = f82.value[0];
+                error = f82.error[0];
+              } else if (channel.meaning == "Eavg") {
+                value = average.value[0];
+                error = average.error[0];
+              } else if (channel.meaning == "sheen_B") {
+                value = sheenB.value[0];
+                error = sheenB.error[0];
+              } else if (channel.meaning == "fabric_lambert") {
+                // HDRP's FabricLambertNoPI: lerp(1, 1/2, alpha), alpha = roughness^2.
+                value = 1.0 - 0.5 * alpha;
+              } else if (channel.meaning == "disney_diffuse") {
+                value = disney.value[0];
+                error = disney.error[0];
+              } else if (channel.meaning == "glass_E") {
+                value = glass.value[0];
+                error = glass.error[0];
+              } else if (channel.meaning == "glass_Eavg") {
+                value = glassAverage.value[0];
+                error = glassAverage.error[0];
+              } else if (channel.meaning == "one") {
+                value = 1.0;
+              }
+              const size_t at = table.index(ix, iy, iz, c);
+              const double stored = channel.scale * value + channel.offset;
+              table.values[at] = std::min(stored, channel.clampMax);
+              table.errors[at] = std::fabs(channel.scale) * error + (stored - table.values[at]);
+            }
           }
-          const size_t at = table.index(ix, iy, c);
-          const double stored = channel.scale * value + channel.offset;
-          table.values[at] = std::min(stored, channel.clampMax);
-          table.errors[at] = std::fabs(channel.scale) * error + (stored - table.values[at]);
         }
-      }
-    }
-  });
+      });
 
   table.metadata = {{"table", table.name},
                     {"preset", presetName},
@@ -308,6 +355,7 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
                     {"sampling", texture.sampling},
                     {"axisX", DescribeAxis(table.x)},
                     {"axisY", table.is2D() ? DescribeAxis(table.y) : "none (1D table)"}};
+  if (table.is3D()) table.metadata.emplace_back("axisZ", DescribeAxis(table.z));
   std::string layout;
   for (int c = 0; c < table.channels; ++c) {
     const PresetChannel &channel = texture.channels[static_cast<size_t>(c)];

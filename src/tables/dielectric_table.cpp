@@ -123,10 +123,10 @@ PointCoordinate DielectricTable::MuCoordinate() {
 PointCoordinate DielectricTable::EtaCoordinate() {
   PointCoordinate c;
   c.option = "eta";
-  c.min = 1.0 / 16.0;
-  c.max = 16.0;
+  c.min = kMinRelativeIor;
+  c.max = kMaxRelativeIor;
   c.accepted =
-      "comma-separated relative IORs from 1/16 to 16 (eta < 1: leaving the denser "
+      "comma-separated relative IORs from 1/128 to 128 (eta < 1: leaving the denser "
       "medium)";
   return c;
 }
@@ -138,8 +138,8 @@ double DielectricTable::AlphaOf(double r) {
 }
 
 void DielectricTable::CheckEta(double eta) {
-  if (!(eta >= 1.0 / 16.0 && eta <= 16.0))
-    throw std::domain_error("eta " + FormatDouble(eta) + " is outside [1/16, 16]");
+  if (!(eta >= kMinRelativeIor && eta <= kMaxRelativeIor))
+    throw std::domain_error("eta " + FormatDouble(eta) + " is outside [1/128, 128]");
 }
 
 PointValue DielectricTable::FromIntegral(const DielectricIntegral &q) {

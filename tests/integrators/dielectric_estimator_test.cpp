@@ -57,6 +57,10 @@ TEST(DielectricEstimator, MeanMatchesQuadrature) {
       {NdfKind::kBeckmann, SmithForm::kCorrelated, kGlass, 0.3, 0.7, 1.0 / 2.42},
       {NdfKind::kBeckmann, SmithForm::kSeparable, kGlass, 0.8, 0.2, 1.33},
       {NdfKind::kGgx, SmithForm::kCorrelated, kGlass, 0.3, 0.5, 1.0},
+      // The ends of the accepted range and Cycles' last IOR slice (99.503).
+      {NdfKind::kGgx, SmithForm::kCorrelated, kGlass, 0.5, 0.6, kMaxRelativeIor},
+      {NdfKind::kGgx, SmithForm::kCorrelated, kGlass, 0.5, 0.6, kMinRelativeIor},
+      {NdfKind::kGgx, SmithForm::kCorrelated, kGlass, 0.36, 0.2, 1.0 / 99.502693},
   };
   for (const Point &p : points) {
     const DielectricAlbedoEstimator e(p.kind, p.smith, p.lobes, p.alpha, p.mu_o, p.eta);
@@ -102,6 +106,12 @@ TEST(DielectricEstimator, RefusesBadArguments) {
   EXPECT_THROW(
       DielectricAlbedoEstimator(NdfKind::kGgx, SmithForm::kCorrelated, kGlass, 0.5, 0.0, 1.5),
       std::invalid_argument);
+  EXPECT_THROW(DielectricAlbedoEstimator(NdfKind::kGgx, SmithForm::kCorrelated, kGlass, 0.5, 0.5,
+                                         kMaxRelativeIor * 1.01),
+               std::invalid_argument);
+  EXPECT_THROW(DielectricAlbedoEstimator(NdfKind::kGgx, SmithForm::kCorrelated, kGlass, 0.5, 0.5,
+                                         kMinRelativeIor * 0.99),
+               std::invalid_argument);
 }
 
 }  // namespace

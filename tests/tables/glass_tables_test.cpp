@@ -166,7 +166,7 @@ TEST(GlassTables, EvalTakesThreeCoordinates) {
   for (const std::string bad :
        {"--table glass_E --mu 0.5 --roughness 0.5",
         "--table glass_E --mu 0.5 --roughness 0.5 "
-        "--eta 20",
+        "--eta 130",
         "--table glass_Eavg --mu 0.5 --roughness 0.5 --eta 1.5",
         "--table glass_E --mu 0.5 --roughness 0.5 --eta 1.5 --estimator cosine"}) {
     const test::CommandResult r = Lutbake("eval " + bad);

@@ -33,7 +33,7 @@ inline constexpr double kDielectricAverageMaxWeight = 2.0;
 
 // The estimator of E at one mu_o (what every sample shares is computed
 // once). Throws std::invalid_argument outside alpha in (0, 1], mu_o in
-// (0, 1], eta in [1/16, 16].
+// (0, 1], eta in [1/128, 128].
 class DielectricAlbedoEstimator {
  public:
   DielectricAlbedoEstimator(NdfKind ndf, SmithForm smith, DielectricLobes lobes, double alpha,

@@ -93,7 +93,7 @@
 // ~70% of the time, the kink scan ~2%.
 //
 // Domain: alpha in [0, 1] (alpha = 0: the exact smooth values, `exact`),
-// mu_o in [0, 1] (0 the grazing limit), eta in [1/16, 16]; else
+// mu_o in [0, 1] (0 the grazing limit), eta in [1/128, 128]; else
 // std::invalid_argument.
 #pragma once
 

@@ -72,6 +72,14 @@ namespace lutbake {
 
 enum class DielectricLobes { kReflection, kReflectionAndTransmission };
 
+// The relative IORs the integrators accept, [1/128, 128]: beyond any real
+// pair of media, and wide enough for Blender Cycles' last IOR slice
+// (99.503, and 1/99.503 in its inverse table), where the panel rule, the
+// adaptive reference and the sampler were checked against one another
+// (dielectric_quadrature_test.cpp, dielectric_estimator_test.cpp).
+inline constexpr double kMinRelativeIor = 1.0 / 128.0;
+inline constexpr double kMaxRelativeIor = 128.0;
+
 // "reflection", "reflection+transmission".
 std::string_view ToString(DielectricLobes lobes);
 

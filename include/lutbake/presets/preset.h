@@ -30,19 +30,26 @@ namespace lutbake {
 //   kLinear         q = u
 //   kSquare         q = u^2       (the axis holds sqrt(q): HDRP's sqrt(NdotV))
 //   kOneMinusSquare q = 1 - u^2   (the axis holds sqrt(1 - q): EEVEE's sqrt(1 - NoV))
-enum class PresetMapping { kLinear, kSquare, kOneMinusSquare };
+//   kIorOfF0Root4   q = (1 + u^2) / (1 - u^2): the IOR whose normal-incidence
+//                   reflectance F0 is u^4, u = sqrt(|(ior - 1) / (ior + 1)|)
+//                   (Cycles' IOR axis); u = 1 is infinite, so such an axis
+//                   clamps q below.
+enum class PresetMapping { kLinear, kSquare, kOneMinusSquare, kIorOfF0Root4 };
 // Where texel i of N lies in u:
 //   kCentres  u = (i + 0.5) / N   (sampled at uv by a linear filter)
 //   kEdges    u = i / (N - 1)     (N >= 2: a half-texel remap, a CPU lookup)
 enum class TexelPlacement { kCentres, kEdges };
 
-// "u", "u^2", "1 - u^2"; "centres", "edges".
+// "u", "u^2", "1 - u^2", "(1 + u^2) / (1 - u^2)"; "centres", "edges".
 const char *ToString(PresetMapping mapping);
 const char *ToString(TexelPlacement placement);
 
 struct PresetAxis {
-  // What the axis drives: "mu" (n.v) or "roughness" (the engine's
-  // roughness, which PresetModel maps to alpha).
+  // What the axis drives: "mu" (n.v), "roughness" (the engine's
+  // roughness, which PresetModel maps to alpha), "eta" (the relative IOR of
+  // the glass channels) or "1/eta" (the axis holds the IOR of the medium
+  // the view is in, and the interface is left: eta = 1 / q, an engine's
+  // table for the inside of glass).
   std::string quantity;
   PresetMapping mapping = PresetMapping::kLinear;
   TexelPlacement placement = TexelPlacement::kCentres;
@@ -75,6 +82,12 @@ struct PresetModel {
   PresetVisibility visibility = PresetVisibility::kCorrelated;
   PresetAlpha alpha = PresetAlpha::kSquared;
   double alphaMin = 0.0;  // alpha = max(alpha, alphaMin): an engine's clamp
+  // |eta - 1| below this: the engine treats the interface as absent (no
+  // rough lobe, light passes straight through), so the glass channels hold
+  // 1 there, exactly (Cycles, bsdf_microfacet.h: fabsf(m_eta - 1.0f) <
+  // 1e-4f). 0: none; the glass albedo at eta = 1 is then lutbake's
+  // microfacet value G2(o, -o) / G1(o).
+  double unitEtaWindow = 0.0;
   // The Charlie sheen channel (meaning "sheen_E"): its visibility and alpha.
   SheenVisibility sheenVisibility = SheenVisibility::kCharlie;
   PresetAlpha sheenAlpha = PresetAlpha::kLinear;
@@ -90,6 +103,9 @@ struct PresetModel {
 //   "sheen_B"   its Schlick-weighted part int D V (1 - o.h)^5 mu_i (HDRP)
 //   "fabric_lambert"  1 - alpha / 2 (HDRP's FabricLambertNoPI)
 //   "f82"       the F82-tint term C (tables f82): F0 A + F90 B - a C
+//   "glass_E"   rough glass's directional albedo, reflection + transmission
+//               (table glass_E) at the texel's eta
+//   "glass_Eavg"  its cosine-weighted average over mu (table glass_Eavg)
 //   "disney_diffuse"  Burley's diffuse albedo as Unity HDRP renormalises it
 //               (preset.cpp, DisneyDiffuseAlbedo), at perceptual roughness
 //   "one", "zero"  constants (a channel the engine does not read)
@@ -106,7 +122,7 @@ struct PresetChannel {
 struct PresetTexture {
   std::string file;    // the file name written: "dfg.inc", "brdf_lut.png"
   std::string format;  // the --format writer that writes it: "exr", "png16", "ktx2-half", ...
-  std::vector<PresetAxis> axes;  // x, then y (1 or 2 axes)
+  std::vector<PresetAxis> axes;  // x, then y, then z (1 to 3 axes; z outermost in memory)
   std::vector<PresetChannel> channels;
   PresetModel model;
   std::string sampling;  // the engine's lookup, as its shader writes it
@@ -132,7 +148,7 @@ std::string PresetNameList();
 ValueType PresetStorage(const PresetTexture &texture);
 
 // Every texel of `texture`, with its integration bound, in the texture's
-// own memory order: a Table whose axes are u itself (x, y over [0, 1] at
+// own memory order: a Table whose axes are u itself (x, y, z over [0, 1] at
 // the texture's placement: edges as the linear axis [-h, 1 + h], h = 0.5 /
 // (N - 1), whose centres are i / (N - 1); a reversed axis as 1 - u), its
 // channels as the engine
