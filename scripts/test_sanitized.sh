@@ -11,7 +11,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build-asan -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DLUTBAKE_SANITIZE=ON >/dev/null
-cmake --build build-asan -j"$(nproc)" --target lutbake_tests lutbake
+cmake --build build-asan -j"$(nproc)" --target lutbake_tests lutbake_image_tests lutbake
 # The subset (the sanitizer build compiles only its test files, CMakeLists
 # LUTBAKE_SANITIZED_TEST_SOURCES): the readers and writers with the hostile
 # inputs and every fuzz corpus replayed (the scene, manifest, table,

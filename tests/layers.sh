@@ -3,31 +3,41 @@
 # only from its own layer and the layers below it.
 #   core < models < integrators < tables < formats, plans < validation, presets < cli
 # formats and plans are side by side, so are validation and presets: neither
-# of a pair includes the other.
+# of a pair includes the other. One awk pass over every file.
 set -euo pipefail
 repo="$(cd "$(dirname "$0")/.." && pwd)"
-rank() {
-  case "$1" in
-    core) echo 0 ;; models) echo 1 ;; integrators) echo 2 ;; tables) echo 3 ;;
-    formats | plans) echo 4 ;; validation | presets) echo 5 ;; cli) echo 6 ;; *) echo -1 ;;
-  esac
-}
-bad=0 checked=0
-while IFS= read -r file; do
-  rel=${file#"$repo"/}
-  layer=$(echo "$rel" | sed -E 's#^(include/lutbake|src)/([a-z]+)/.*#\2#')
-  [ "$(rank "$layer")" -ge 0 ] || continue
-  checked=$((checked + 1))
-  # "lutbake/LAYER/..." (public) and "LAYER/..." (private, from src/).
-  while IFS= read -r included; do
-    other=$(echo "$included" | sed -E 's#^(lutbake/)?([a-z_]+)/.*#\2#')
-    r=$(rank "$other")
-    [ "$r" -ge 0 ] || continue
-    if [ "$r" -gt "$(rank "$layer")" ] || { [ "$r" -eq "$(rank "$layer")" ] && [ "$other" != "$layer" ]; }; then
-      echo "$rel ($layer) includes $included ($other)"
-      bad=$((bad + 1))
-    fi
-  done < <(grep -oE '#include "[^"]+"' "$file" | sed -E 's/#include "(.*)"/\1/')
-done < <(find "$repo/include/lutbake" "$repo/src" -name '*.h' -o -name '*.cpp' | sort)
-echo "$checked files checked, $bad includes against the layers"
-[ "$bad" -eq 0 ] && [ "$checked" -gt 50 ]
+cd "$repo"
+find include/lutbake src \( -name '*.h' -o -name '*.cpp' \) | sort |
+  xargs awk '
+    BEGIN {
+      split("core models integrators tables formats plans validation presets cli", names, " ")
+      split("0 1 2 3 4 4 5 5 6", ranks, " ")
+      for (i in names) rank[names[i]] = ranks[i]
+    }
+    FNR == 1 {
+      # include/lutbake/LAYER/... or src/LAYER/...
+      layer = FILENAME
+      sub(/^(include\/lutbake|src)\//, "", layer)
+      if (index(layer, "/") == 0) layer = ""
+      sub(/\/.*/, "", layer)
+      if (layer in rank) checked++
+    }
+    (layer in rank) && /^[ \t]*#[ \t]*include[ \t]*"/ {
+      # "lutbake/LAYER/..." (public) and "LAYER/..." (private, from src/).
+      included = $0
+      sub(/^[^"]*"/, "", included)
+      sub(/".*/, "", included)
+      other = included
+      sub(/^lutbake\//, "", other)
+      if (index(other, "/") == 0) next
+      sub(/\/.*/, "", other)
+      if (!(other in rank)) next
+      if (rank[other] > rank[layer] || (rank[other] == rank[layer] && other != layer)) {
+        printf "%s (%s) includes %s (%s)\n", FILENAME, layer, included, other
+        bad++
+      }
+    }
+    END {
+      printf "%d files checked, %d includes against the layers\n", checked, bad
+      exit !(bad == 0 && checked > 50)
+    }'
