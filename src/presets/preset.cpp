@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "lutbake/formats/writer.h"
 #include "lutbake/integrators/albedo_quadrature.h"
@@ -304,41 +305,30 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
             for (int c = 0; c < table.channels; ++c) {
               const PresetChannel &channel = texture.channels[static_cast<size_t>(c)];
               double value = 0.0, error = 0.0;
-              if (channel.meaning == "A") {
-                value = split.value[0];
-                error = split.error[0];
-              } else if (channel.meaning == "B") {
-                value = split.value[1];
-                error = split.error[1];
+              // The single-valued meanings and the integral each reads.
+              const std::pair<const char *, const PointValue *> kSingle[] = {
+                  {"sheen_E", &sheen},          {"f82", &f82},
+                  {"Eavg", &average},           {"sheen_B", &sheenB},
+                  {"disney_diffuse", &disney},  {"glass_E", &glass},
+                  {"glass_Eavg", &glassAverage}};
+              if (channel.meaning == "A" || channel.meaning == "B") {
+                const int k = channel.meaning == "A" ? 0 : 1;
+                value = split.value[k];
+                error = split.error[k];
               } else if (channel.meaning == "E") {
                 value = split.value[0] + split.value[1];
                 error = split.error[0] + split.error[1];
-              } else if (channel.meaning == "sheen_E") {
-                value = sheen.value[0];
-                error = sheen.error[0];
-              } else if (channel.meaning == "f82") {
-                value = f82.value[0];
-                error = f82.error[0];
-              } else if (channel.meaning == "Eavg") {
-                value = average.value[0];
-                error = average.error[0];
-              } else if (channel.meaning == "sheen_B") {
-                value = sheenB.value[0];
-                error = sheenB.error[0];
               } else if (channel.meaning == "fabric_lambert") {
                 // HDRP's FabricLambertNoPI: lerp(1, 1/2, alpha), alpha = roughness^2.
                 value = 1.0 - 0.5 * alpha;
-              } else if (channel.meaning == "disney_diffuse") {
-                value = disney.value[0];
-                error = disney.error[0];
-              } else if (channel.meaning == "glass_E") {
-                value = glass.value[0];
-                error = glass.error[0];
-              } else if (channel.meaning == "glass_Eavg") {
-                value = glassAverage.value[0];
-                error = glassAverage.error[0];
               } else if (channel.meaning == "one") {
                 value = 1.0;
+              } else {
+                for (const auto &[meaning, integral] : kSingle)
+                  if (channel.meaning == meaning) {
+                    value = integral->value[0];
+                    error = integral->error[0];
+                  }
               }
               const size_t at = table.index(ix, iy, iz, c);
               const double stored = channel.scale * value + channel.offset;
