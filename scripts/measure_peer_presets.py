@@ -6,13 +6,14 @@ Usage:
     /usr/bin/python3 scripts/measure_peer_presets.py PEER_DIR LUTBAKE [CYCLES_DIR]
 
 PEER_DIR holds the peers' tables as CSV (extracted from each project's source, conventions in
-each file's comments; not bundled except the four under tests/data/presets/):
+each file's comments; not bundled except the five under tests/data/presets/):
   cycles_table_ggx_E.csv          Blender Cycles table_ggx_E (tests/data/presets/)
   threejs_dfg_lut_16x16.csv       three.js DFGLUTData.js, current (tests/data/presets/)
   threejs_dfg_lut_32x32.csv       three.js DFGLUTData.js, r181 (tests/data/presets/)
   filament_dfg_64x64.csv          Filament v1.19.0 dfg.inc, mobile size (tests/data/presets/)
   ibl_brdf_lut_png_website_copy.csv  LearnOpenGL's website ibl_brdf_lut.png (8-bit, 256^2)
   lut_sheen_E_current_1024x1024.csv  glTF Sample Renderer assets/images/lut_sheen_E.png
+  eevee_brdf_ggx_rows.csv         Blender EEVEE brdf_ggx, 13 of 64 rows (tests/data/presets/)
 CYCLES_DIR, if given, is the output of `lutbake bake --preset cycles --out CYCLES_DIR`: its
 four glass arrays are compared, value for value in Cycles' own memory order, with Cycles'
 shipped ones in tests/data/glass/peers/ (slice 0, ior = 1, apart). A missing file is reported
@@ -25,6 +26,7 @@ import json
 import os
 import subprocess
 import sys
+import tempfile
 
 import numpy as np
 
@@ -146,8 +148,35 @@ def main():
                    where)
 
 
+    path = os.path.join(peer, "eevee_brdf_ggx_rows.csv")
+    if os.path.exists(path):
+        eevee(path, lutbake)
+
     if len(sys.argv) > 3:
         cycles_glass(sys.argv[3])
+
+
+def eevee(path, lutbake):
+    """Blender's brdf_ggx[j][i][c] rows against the eevee preset's brdf_ggx.inc, same order."""
+    with tempfile.TemporaryDirectory() as out:
+        subprocess.run([lutbake, "bake", "--preset", "eevee", "--out", os.path.join(out, "e")],
+                       check=True, capture_output=True)
+        with open(os.path.join(out, "e", "brdf_ggx.inc")) as f:
+            body = " ".join(line for line in f if not line.startswith("//"))
+    ours = [float(v.strip().rstrip("f")) for v in body.split(",") if v.strip()]
+    assert len(ours) == 64 * 64 * 3, len(ours)
+    # The last row apart: Blender integrated it at NV = 1e-4 (its generator's clamp), the preset
+    # at NV = 0, where the shader samples it.
+    for label, keep in (("rows 0 to 62", lambda j: j < 63), ("row 63, NV 1e-4 vs 0", lambda j: j == 63)):
+        r = [x for x in rows(path) if keep(int(x["j"]))]
+        for c, key in enumerate(("blender_A", "blender_B")):
+            diffs, where = [], []
+            for x in r:
+                i, j = int(x["i"]), int(x["j"])
+                diffs.append(float(x[key]) - ours[(j * 64 + i) * 3 + c])
+                where.append(f"sqrt(1 - NV) {j}/63, roughness {i}/63")
+            report(f"EEVEE brdf_ggx 64x64 ({'AB'[c]}; {len(r) // 64} of its rows: {label})",
+                   diffs, where)
 
 
 def c_array_values(path):

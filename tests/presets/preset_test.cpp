@@ -437,6 +437,40 @@ TEST(Presets, EeveeAxesAreEdgesInSqrtOneMinusNv) {
     }
 }
 
+// Blender's own brdf_ggx (eevee_next at bfc6978, two channels; 13 of its 64
+// rows, printed to 6 decimals): brdf_ggx[j][i] with j the sqrt(1 - NV) row.
+// The bias B, a small sum, agrees to its printed digits up to the middle
+// rows, which only the right layout does (one row off or transposed misses
+// by far more). The scale A is off by up to 3e-3 near roughness 0, where
+// the exact A + B is 1 and Blender's exceeds it: its generator sums 512^2
+// samples of about 1 in a float (spacing 1/32 near the total).
+TEST(Presets, EeveeLayoutMatchesBlendersTable) {
+  const Table table = BakePresetTexture(TextureOf("eevee"), "eevee");
+  const auto rows = ReadCsv(DataPath("presets/eevee_brdf_ggx_rows.csv"));
+  ASSERT_EQ(rows.size(), 13u * 64u);
+  std::vector<double> scale, bias, biasRowOff, biasTransposed;
+  for (const auto &row : rows) {
+    const int i = static_cast<int>(row.Number("i")), j = static_cast<int>(row.Number("j"));
+    const double theirsA = row.Number("blender_A"), theirsB = row.Number("blender_B");
+    scale.push_back(std::abs(table.value(i, j, 0) - theirsA));
+    bias.push_back(std::abs(table.value(i, j, 1) - theirsB));
+    if (j <= 32) {
+      EXPECT_NEAR(table.value(i, j, 1), theirsB, 2e-6) << "i " << i << " j " << j;
+    }
+    if (j < 63) biasRowOff.push_back(std::abs(table.value(i, j + 1, 1) - theirsB));
+    biasTransposed.push_back(std::abs(table.value(j, i, 1) - theirsB));
+    // At the mirror column the exact scale is 1 - (1 - NV)^5.
+    if (i == 0 && j < 63) {
+      const double nv = 1.0 - (j / 63.0) * (j / 63.0);
+      EXPECT_NEAR(table.value(0, j, 0), 1.0 - std::pow(1.0 - nv, 5), 1e-9);
+    }
+  }
+  EXPECT_LT(Median(bias), 1e-6);
+  EXPECT_LT(Median(scale), 1e-4);
+  EXPECT_GT(Median(biasRowOff), 50.0 * Median(bias));
+  EXPECT_GT(Median(biasTransposed), 1e-2);
+}
+
 // The CLI: the files, and preset.json describing them well enough to read
 // the file without knowing the preset.
 TEST(Presets, BakeWritesFilesAndPresetJsonThatDescribesThem) {
