@@ -151,9 +151,113 @@ def main():
     path = os.path.join(peer, "eevee_brdf_ggx_rows.csv")
     if os.path.exists(path):
         eevee(path, lutbake)
+    generated(peer, lutbake)
 
     if len(sys.argv) > 3:
         cycles_glass(sys.argv[3])
+
+
+def dump_pixels(path):
+    """{(x, y): [channel values]} of an image through oiiotool --dumpdata (unorm as 0..1)."""
+    out = subprocess.run(["oiiotool", "--dumpdata", path], check=True, capture_output=True,
+                         text=True).stdout
+    pixels = {}
+    for line in out.splitlines():
+        line = line.strip()
+        if not line.startswith("Pixel ("):
+            continue
+        where, values = line[len("Pixel ("):].split("):", 1)
+        x, y = (int(v) for v in where.split(","))
+        if "(" in values:  # integer codes, then the normalised values in parentheses
+            values = values.split("(", 1)[1].rstrip(")")
+        pixels[(x, y)] = [float(v) for v in values.split()]
+    return pixels
+
+
+def ktx2_half_pixels(path):
+    """{(x, y): [channels]} of a 2D KTX2 file of R16G16_SFLOAT (level 0, no supercompression)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    width, height = np.frombuffer(data, "<u4", 2, 20)
+    offset, length = np.frombuffer(data, "<u8", 2, 80)
+    values = np.frombuffer(data, "<f2", int(length) // 2, int(offset)).astype(float)
+    values = values.reshape(int(height), int(width), -1)
+    return {(x, y): list(values[y, x]) for y in range(int(height)) for x in range(int(width))}
+
+
+def bake_preset(lutbake, name, out):
+    subprocess.run([lutbake, "bake", "--preset", name, "--out", os.path.join(out, name)],
+                   check=True, capture_output=True)
+    return os.path.join(out, name)
+
+
+def generated(peer, lutbake):
+    """The engines that build their table at run time (Unreal, Godot, HDRP), against their
+    generators re-implemented by scripts/engine_generators.py (CSV in PEER_DIR), each texel
+    compared in the engine's own layout and storage."""
+    names = ("unreal_preintegrated_gf.csv", "godot_dfg.csv", "hdrp_fgd_ggx_disney.csv",
+             "hdrp_fgd_charlie.csv")
+    if not any(os.path.exists(os.path.join(peer, n)) for n in names):
+        print("| run-time generators: none in PEER_DIR (scripts/engine_generators.py PEER_DIR) "
+              "| | | |")
+        return
+    with tempfile.TemporaryDirectory() as out:
+        path = os.path.join(peer, names[0])
+        if os.path.exists(path):
+            ours = dump_pixels(os.path.join(bake_preset(lutbake, "unreal", out),
+                                            "PreIntegratedGF.png"))
+            r = rows(path)
+            for c, key in enumerate(("A", "B")):
+                diffs = [float(x[key]) - ours[(int(x["i"]), int(x["j"]))][c] for x in r]
+                where = [f"NoV {float(x['NoV']):.4g}, Roughness {float(x['roughness']):.4g}"
+                         for x in r]
+                report(f"Unreal PreIntegratedGF 128x32 unorm16, its generator run here ({key})",
+                       diffs, where)
+        path = os.path.join(peer, names[1])
+        if os.path.exists(path):
+            ours = ktx2_half_pixels(os.path.join(bake_preset(lutbake, "godot", out), "dfg.ktx2"))
+            r = rows(path)
+            for shift, label in ((0, "rows as the shader reads them"),
+                                 (1, "row j against the preset's row j - 1, the roughness it "
+                                     "integrated")):
+                for c, key in enumerate(("R_B", "G_E")):
+                    diffs, where = [], []
+                    for x in r:
+                        i, j = int(x["i"]), int(x["j"])
+                        if j - shift < 0:
+                            continue
+                        diffs.append(float(x[key]) - ours[(i, j - shift)][c])
+                        where.append(f"NoV {float(x['NdotV']):.4g}, roughness read "
+                                     f"{float(x['roughness_read']):.4g}")
+                    report(f"Godot dfg 128x128 RG16F, its generator run here ({key[0]}; {label})",
+                           diffs, where)
+        for k, (preset, file, keys) in enumerate((
+                ("unity-hdrp", "PreIntegratedFGD_GGXDisneyDiffuse.exr", ("R_x", "G_y", "B_z")),
+                ("unity-hdrp", "PreIntegratedFGD_CharlieFabricLambert.exr",
+                 ("R_x", "G_y", "B_z")))):
+            path = os.path.join(peer, names[2 + k])
+            if not os.path.exists(path):
+                continue
+            directory = os.path.join(out, preset)
+            if not os.path.exists(directory):
+                bake_preset(lutbake, preset, out)
+            ours = dump_pixels(os.path.join(directory, file))
+            r = rows(path)
+            label = ""
+            if k == 0:
+                # HDRP integrates the column sqrt(NdotV) = 0 at NdotV = FLT_EPS, the preset
+                # at 0 (where the shader reads it); that column apart.
+                r = [x for x in r if int(x["i"]) > 0]
+                label = ", the column NdotV = 0 apart"
+            for c, key in enumerate(keys):
+                # The engine's texture is 10-bit unorm: the preset's exact value clamped to
+                # [0, 1] is what that storage can hold.
+                diffs = [float(x[key]) - min(1.0, max(0.0, ours[(int(x["i"]), int(x["j"]))][c]))
+                         for x in r]
+                where = [f"NdotV {float(x['NdotV']):.4g}, perceptualRoughness "
+                         f"{float(x['perceptual_roughness']):.4g}" for x in r]
+                report(f"HDRP {file[:-4]} 64x64 10-bit, its generator run here ({key}{label})",
+                       diffs, where)
 
 
 def eevee(path, lutbake):
