@@ -87,13 +87,20 @@ int RunPresetBake(const BakeOptions &o, const std::string &commandLine, CLI::App
                 << accepted << "\n";
       return 2;
     }
-    for (const std::string &file : wanted)
+    for (size_t k = 0; k < wanted.size(); ++k) {
+      const std::string &file = wanted[k];
       if (std::none_of(preset->textures.begin(), preset->textures.end(),
                        [&](const PresetTexture &t) { return t.file == file; })) {
         std::cerr << "lutbake bake: --files: " << file << " is not a file of --preset "
                   << preset->name << "; accepted: " << accepted << "\n";
         return 2;
       }
+      if (std::find(wanted.begin(), wanted.begin() + k, file) != wanted.begin() + k) {
+        std::cerr << "lutbake bake: --files '" << o.presetFiles << "' names " << file
+                  << " twice; the files of --preset " << preset->name << ": " << accepted << "\n";
+        return 2;
+      }
+    }
     for (const PresetTexture &t : preset->textures)
       if (std::find(wanted.begin(), wanted.end(), t.file) != wanted.end()) textures.push_back(&t);
   } else {
@@ -277,8 +284,9 @@ int CheckPresetDirectory(const std::string &dir, bool json) {
   try {
     listing = ReadPresetListing(manifestPath);
   } catch (const IoError &e) {
+    // The directory was given right; the file in it cannot be used.
     std::cerr << "lutbake check: " << e.what() << "\n";
-    return 2;
+    return 1;
   }
   const Preset *preset = listing.preset;
   nlohmann::ordered_json report;
@@ -292,12 +300,12 @@ int CheckPresetDirectory(const std::string &dir, bool json) {
                      [&](const PresetTexture &t) { return t.file == file; })) {
       std::cerr << "lutbake check: " << manifestPath << " lists " << file
                 << ", which is not a file of preset " << preset->name << "\n";
-      return 2;
+      return 1;
     }
   }
   if (listing.errorMaxByFile.empty()) {
     std::cerr << "lutbake check: " << manifestPath << " lists no file\n";
-    return 2;
+    return 1;
   }
   bool allPass = true;
   for (const PresetTexture &texture : preset->textures) {

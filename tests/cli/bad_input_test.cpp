@@ -113,6 +113,18 @@ class BadInput : public testing::TestWithParam<BadInputCase> {
     // A .bin that is not one at all.
     fs::create_directories(fixtures_ / "garbage");
     std::ofstream(fixtures_ / "garbage" / "E.bin") << "this is not a lutbake table";
+    // Preset directories whose preset.json cannot be used.
+    fs::create_directories(fixtures_ / "preset_not_json");
+    std::ofstream(fixtures_ / "preset_not_json" / "preset.json") << "{\"preset\": \"cycles\", ";
+    fs::create_directories(fixtures_ / "preset_foreign_file");
+    std::ofstream(fixtures_ / "preset_foreign_file" / "preset.json")
+        << R"({"preset": "cycles", "files": [{"file": "dfg.ktx2", "errorMax": 1e-7}]})";
+    fs::create_directories(fixtures_ / "preset_no_file");
+    std::ofstream(fixtures_ / "preset_no_file" / "preset.json")
+        << R"({"preset": "godot", "files": []})";
+    fs::create_directories(fixtures_ / "preset_unknown");
+    std::ofstream(fixtures_ / "preset_unknown" / "preset.json")
+        << R"({"preset": "quake", "files": [{"file": "dfg.ktx2", "errorMax": 1e-7}]})";
     before_ = Snapshot(fixtures_);
   }
   static void TearDownTestSuite() { fs::remove_all(fixtures_); }
