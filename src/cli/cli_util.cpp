@@ -103,6 +103,10 @@ std::string PrepareOutputDirectory(const std::string &dir, bool *created, bool *
   std::error_code ec;
   *created = false;
   *usageError = false;
+  if (dir.empty()) {
+    *usageError = true;
+    return "is empty; accepted: a directory, created if missing";
+  }
   if (fs::exists(dir, ec)) {
     if (!fs::is_directory(dir, ec)) {
       *usageError = true;
