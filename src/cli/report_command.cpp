@@ -11,6 +11,7 @@
 
 #include "bake_command.h"
 #include "cli_util.h"
+#include "interrupt.h"
 #include "lutbake/formats/atomic_output.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/validation/report.h"
@@ -80,28 +81,38 @@ int RunReport(const ReportOptions &o) {
 
   bool created = false;
   if (const int status = PrepareOutputOrComplain("report", o.outDir, &created)) return status;
+  RemoveStaleTemporaries(o.outDir);
   const int threads = ThreadCount(o.threads);
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
                                   static_cast<size_t>(threads));
+  // SIGINT and SIGTERM end the report as they end a bake: 130 / 143, one
+  // line, nothing written and the directory removed if this run made it.
+  const InterruptGuard interrupt;
+  settings.cancellation = &interrupt.token();
   // A progress line, rewritten in place, only when stderr is a terminal.
   ReportProgressFn progress;
   if (::isatty(STDERR_FILENO))
     progress = [](const std::string &line) { std::cerr << "\r\033[K" << line << std::flush; };
-  const std::vector<ReportRow> rows = RunReport(settings, progress);
-  if (progress) std::cerr << "\r\033[K";
+  std::vector<ReportRow> rows;
   namespace fs = std::filesystem;
   try {
+    rows = RunReport(settings, progress);
+    if (progress) std::cerr << "\r\033[K";
     AtomicOutputSet output;
     WriteText(output, (fs::path(o.outDir) / "report.csv").string(), ReportCsv(rows));
     WriteText(output, (fs::path(o.outDir) / "report.md").string(), ReportMarkdown(settings, rows));
     WriteText(output, (fs::path(o.outDir) / "report.svg").string(), ReportSvg(settings, rows));
+    interrupt.token().ThrowIfCancelled();
     output.Commit();
+  } catch (const Cancelled &c) {
+    if (progress) std::cerr << "\r\033[K";
+    RemoveCreatedDirectory(o.outDir, created);
+    std::cerr << "lutbake report: interrupted by " << SignalName(c.reason())
+              << "; nothing written to " << o.outDir << "\n";
+    return 128 + c.reason();
   } catch (const IoError &e) {
     std::cerr << "lutbake report: " << e.what() << "\n";
-    if (created) {
-      std::error_code ec;
-      fs::remove(o.outDir, ec);
-    }
+    RemoveCreatedDirectory(o.outDir, created);
     return 1;
   }
   std::cerr << "lutbake report: " << rows.size() << " runs; wrote report.csv, report.md, "

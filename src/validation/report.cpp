@@ -22,6 +22,7 @@ BakeSettings BaseSettings(const ReportSettings &s) {
   b.depthSize = s.depthSize;
   b.seed = s.seed;
   b.replicates = kDefaultReplicates;
+  b.cancellation = s.cancellation;
   return b;
 }
 
@@ -40,12 +41,14 @@ std::vector<std::array<double, 2>> ReferenceValues(const ReportSettings &s,
   const size_t texels = layout.texelCount(), slice = texels / layout.depth();
   std::vector<std::array<double, 2>> ref(texels);
   tbb::parallel_for(size_t(0), texels, [&](size_t t) {
+    if (s.cancellation && s.cancellation->cancelled()) return;
     const int ix = static_cast<int>(t % layout.width());
     const int iy = static_cast<int>((t % slice) / layout.width());
     const int iz = static_cast<int>(t / slice);
     const PointValue v = EvaluateTexel(table, reference, layout, ix, iy, iz);
     ref[t] = {v.value[0], v.value[1]};
   });
+  if (s.cancellation) s.cancellation->ThrowIfCancelled();
   return ref;
 }
 
@@ -139,6 +142,7 @@ std::vector<ReportRow> RunReport(const ReportSettings &s, const ReportProgressFn
                         quadrature ? b.tolerance : static_cast<double>(b.samples), spent, share);
           progress(line);
         }
+        if (s.cancellation) s.cancellation->ThrowIfCancelled();
         ReportRow row = Measure(*table, b, ref);
         row.tolerance = quadrature ? b.tolerance : 0.0;
         last = row.seconds;

@@ -375,6 +375,35 @@ TEST(Reliability, SigintAndSigtermEndPromptlyAndLeaveNothing) {
   }
 }
 
+// `lutbake report` (a minute of bakes by default) ends on a signal as a bake
+// does: during its reference values and later during its timed runs.
+TEST(Reliability, ReportEndsOnSignalsLikeABake) {
+  for (const int signal : {SIGINT, SIGTERM}) {
+    for (const int afterMs : {200, 2500}) {
+      const std::string name = signal == SIGINT ? "SIGINT" : "SIGTERM";
+      const std::string context = name + " after " + std::to_string(afterMs) + " ms";
+      const fs::path out = lutbake::test::Scratch("report_signal_" + name);
+      const fs::path log = out.string() + ".log";
+      const pid_t pid = Spawn({"report", "--out", out.string(), "--threads", "1"}, log);
+      std::this_thread::sleep_for(std::chrono::milliseconds(afterMs));
+      ::kill(pid, signal);
+      const auto sent = Clock::now();
+      const int status = WaitFor(pid, std::chrono::seconds(30));
+      const double latency = std::chrono::duration<double>(Clock::now() - sent).count();
+      ASSERT_TRUE(status != -1 && WIFEXITED(status)) << context << ": " << ReadAll(log);
+      EXPECT_EQ(WEXITSTATUS(status), 128 + signal) << context << ": " << ReadAll(log);
+      EXPECT_LT(latency, 1.0) << context;
+      const std::vector<std::string> lines = Lines(ReadAll(log));
+      ASSERT_EQ(lines.size(), 1u) << context << ": " << ReadAll(log);
+      EXPECT_EQ(lines[0],
+                "lutbake report: interrupted by " + name + "; nothing written to " + out.string());
+      EXPECT_FALSE(fs::exists(out)) << context << ": the directory the run created is left";
+      fs::remove_all(out);
+      fs::remove(log);
+    }
+  }
+}
+
 // A file size limit that the first files fit and a later one does not:
 // exit 1, the file and the reason, the previous set untouched.
 TEST(Reliability, FileSizeLimitFailsWithTheFileAndReasonAndKeepsThePreviousSet) {

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "lutbake/core/cancellation.h"
 #include "lutbake/tables/bake.h"
 
 namespace lutbake {
@@ -27,6 +28,8 @@ struct ReportSettings {
   int depthSize = 0;          // slices of a 3D table's eta axis (0: its default)
   double budgetSeconds = 60;  // in total, split evenly over table x estimator
   uint64_t seed = 0;
+  // Polled between texels and runs: RunReport throws Cancelled once it is.
+  const CancellationToken *cancellation = nullptr;
 };
 
 struct ReportRow {
