@@ -1,13 +1,13 @@
 #!/usr/bin/python3
-"""Three engines' own split-sum / DFG table generators, re-implemented (not copied) in numpy with
+"""Four engines' own split-sum / DFG table generators, re-implemented (not copied) in numpy with
 float32 arithmetic where the engine computes in float, so that lutbake can be compared with "the
 engine's own table". Each table is written in the engine's own memory layout, after the engine's
 storage quantisation (unorm16, half float, 10-bit unorm), as a CSV with '#' header lines.
 
 Usage:
-    /usr/bin/python3 scripts/engine_generators.py OUT_DIR [engine ...]
+    /usr/bin/python3 scripts/engine_generators.py OUT_DIR [--stride N] [engine ...]
 
-engines (default: unreal godot hdrp_ggx hdrp_charlie):
+engines (default: unreal godot hdrp_ggx hdrp_charlie gltf_ggx gltf_charlie):
   unreal         -> unreal_preintegrated_gf.csv
       Unreal Engine 4 FSystemTextures PreintegratedGF (128 x 32, G16R16)
       windystrife/UnrealEngine_NVIDIAGameWorks@0f9675ae7119323ea973b2adde381b6f71eaead9
@@ -33,9 +33,18 @@ engines (default: unreal godot hdrp_ggx hdrp_charlie):
         (IntegrateGGXAndDisneyDiffuseFGD, @7dae456904eedb01a451a0e8dc52217d5cbe7471),
       .../ShaderLibrary/BSDF.hlsl, Sampling/Sampling.hlsl, Sampling/Hammersley.hlsl, CommonLighting.hlsl,
       Common.hlsl (helpers).
+  gltf_ggx       -> gltf_lut_ggx.csv
+  gltf_charlie   -> gltf_lut_charlie.csv
+  gltf           -> both glTF tables
+      KhronosGroup glTF Sample Renderer lut_ggx (R = A, G = B) and lut_charlie (B = sheen albedo), 1024 x 1024, 512 samples,
+      RGBA16F, rendered at start-up: source/shaders/ibl_filtering.frag (@d3d2f605306756e76396073d3aef81b71012c16d, LUT()),
+      source/ibl_sampler.js (@d0a1feac0c3cf41af6b05757f11f358bb5b3ebeb, sampleLut(), createLutTexture()), read in
+      source/Renderer/shaders/ibl.glsl (@79f90e28d7951352833398695eb16de606a4fa63) at vec2(NdotV, perceptual roughness).
+      A full table is 1024^2 x 512 samples; --stride N (default 16) lists only texels with i % N == j % N == (N - 1) // 2
+      (64 x 64 texels by default, about a second each; --stride 1 is the full table: 256 times the work).
 
 After each table a few sanity figures are printed (limits at roughness -> 0, A + B <= 1, smoothness).
-numpy only; each table takes a few seconds. GPU transcendental functions (sin, cos, pow, exp) are
+numpy only; each table takes a few seconds (the glTF ones at the default stride). GPU transcendental functions (sin, cos, pow, exp) are
 emulated with numpy's float32 ones, which are close to but not bit-identical with any GPU's.
 """
 import math
@@ -452,6 +461,165 @@ def hdrp_charlie_table():
 
 
 # ---------------------------------------------------------------------------------------------
+# KhronosGroup glTF Sample Renderer (formerly glTF-Sample-Viewer): lut_ggx and lut_charlie, rendered
+# once at start-up by the LUT branch of ibl_filtering.frag into 1024 x 1024 textures.
+# ---------------------------------------------------------------------------------------------
+GLTF_RES = 1024
+GLTF_SAMPLES = 512                                                  # sampleLut(): u_sampleCount = 512
+GLTF_STRIDE = 16                                                     # default: 64 x 64 of the 1024 x 1024 texels
+GLTF_PI = F(3.1415926535897932384626433832795)                      # MATH_PI as a highp literal
+GLTF_SRC = [
+    "KhronosGroup/glTF-Sample-Renderer source/shaders/ibl_filtering.frag @d3d2f605306756e76396073d3aef81b71012c16d",
+    "  (LUT(), getImportanceSample(), hammersley2d(), GGX(), Charlie(), D_Charlie(), V_SmithGGXCorrelated(), V_Ashikhmin();",
+    "  the LUT code is the same in KhronosGroup/glTF-Sample-Viewer @b3a7e6680032ab858036e98792c90f9664963053),",
+    "  source/ibl_sampler.js @d0a1feac0c3cf41af6b05757f11f358bb5b3ebeb (lutResolution 1024, sampleLut(): u_sampleCount 512,",
+    "  u_isGeneratingLUT 1, viewport 1024 x 1024, one full-screen triangle; createLutTexture(): internalFormat() = RGBA16F / HALF_FLOAT",
+    "  when EXT_color_buffer_float or EXT_color_buffer_half_float is present (preferredFormat), RGBA32F if the panorama exceeds 65504",
+    "  and float is renderable, RGBA8 without float render targets), LINEAR filter, CLAMP_TO_EDGE;",
+    "  read: source/Renderer/shaders/ibl.glsl @79f90e28d7951352833398695eb16de606a4fa63 (texture(u_GGXLUT, clamp(vec2(NdotV, roughness))).rg,",
+    "  texture(u_CharlieLUT, clamp(vec2(NdotV, sheenRoughness))).b) with pbr.frag @9dfbb82b9068b68a925084e67a00eb77bb2192cc passing",
+    "  materialInfo.perceptualRoughness and materialInfo.sheenRoughnessFactor (both the perceptual value, unsquared)",
+]
+GLTF_LAYOUT = [
+    "layout: texel (i, j) = column i, framebuffer / texture row j counted from row 0 (GL: bottom = t near 0); the pass integrates at",
+    "  texCoord = ((i + 0.5) / 1024, (j + 0.5) / 1024) = (NdotV, roughness) (fragment centres; fullscreen.vert is not in the index:",
+    "  assumed the usual attribute-less triangle with texCoord = clip xy * 0.5 + 0.5), and the renderer reads at vec2(NdotV, roughness),",
+    "  so texel centres are read at the values they were integrated at; every texel with i % S == o and j % S == o (S = stride, o = (S - 1) // 2) is listed",
+    "storage: the RGBA16F path (the preferred one): each channel rounded to half (round to nearest even, as numpy; GL lets a",
+    "  float-to-half conversion for a render target round either way); *_f32 columns are the shader's float32 outputs (the RGBA32F path)",
+]
+
+
+def gltf_hammersley(i, n):
+    """hammersley2d(i, N) = (float(i) / float(N), float(bitreverse32(i)) * 2^-32), in float32."""
+    return F(i) / F(n), F(float(reverse_bits32(i))) * F(2.3283064365386963e-10)
+
+
+def gltf_texels(stride):
+    off = (stride - 1) // 2
+    idx = np.arange(off, GLTF_RES, stride)
+    return idx, (f32(idx) + F(0.5)) / F(GLTF_RES)                 # (i + 0.5) / 1024, exact in float32
+
+
+def gltf_lut(kind, nv, rough, nsamp=GLTF_SAMPLES):
+    """LUT(NdotV, roughness) of ibl_filtering.frag for u_distribution = cGGX (kind 'ggx') or cCharlie ('charlie'),
+    on the grid rough (rows) x nv (columns); returns the float32 (R, G, B) it writes."""
+    two_pi = F(2.0) * GLTF_PI
+    r = rough[:, None] * np.ones((1, nv.size), F)                   # u_roughness is unused: LUT() gets texCoord.y
+    ndv = np.ones((rough.size, 1), F) * nv[None, :]
+    vx = np.sqrt(F(1.0) - ndv * ndv)                                # V = (sqrt(1 - NdotV^2), 0, NdotV), N = +z
+    vz = ndv
+    alpha = r * r                                                   # both samplers square the roughness they get
+    acc_a = np.zeros_like(r)
+    acc_b = np.zeros_like(r)
+    acc_c = np.zeros_like(r)
+    if kind == "ggx":
+        a2 = np.power(r, F(4.0))                                    # V_SmithGGXCorrelated: pow(roughness, 4.0)
+    else:
+        sr = np.maximum(r, F(0.000001))                             # D_Charlie(roughness, .) uses it as alpha as is
+        inv_r = F(1.0) / sr
+        expo = alpha / (F(2.0) * alpha + F(1.0))                    # Charlie(): sinTheta = xi.y^(alpha / (2 alpha + 1))
+    for s in range(nsamp):
+        xi_x, xi_y = gltf_hammersley(s, nsamp)
+        sphi, cphi = sin_cos_f32(two_pi * xi_x)                     # phi = 2 pi xi.x for every distribution
+        if kind == "ggx":
+            cos_t = np.clip(np.sqrt((F(1.0) - xi_y) / (F(1.0) + (alpha * alpha - F(1.0)) * xi_y)), F(0), F(1))
+            sin_t = np.sqrt(F(1.0) - cos_t * cos_t)
+        else:
+            sin_t = np.power(xi_y, expo)                            # pow(0, e > 0) = 0 at sample 0
+            cos_t = np.sqrt(F(1.0) - sin_t * sin_t)
+        # local direction, normalised; generateTBN(+z) = (tangent (1,0,0), bitangent (0,1,0), N): the identity
+        hx, hy, hz = normalize3(sin_t * cphi, sin_t * sphi, cos_t)
+        vdh_raw = vx * hx + vz * hz
+        s2 = F(2.0) * vdh_raw                                       # reflect(-V, H) = 2 (V.H) H - V, then normalised
+        lx, ly, lz = normalize3(s2 * hx - vx, s2 * hy, s2 * hz - vz)
+        ndl = np.clip(lz, F(0), F(1))
+        ndh = np.clip(hz, F(0), F(1))
+        vdh = np.clip(vdh_raw, F(0), F(1))
+        ok = ndl > F(0.0)
+        if kind == "ggx":
+            ggx_v = ndl * np.sqrt(ndv * ndv * (F(1.0) - a2) + a2)
+            ggx_l = ndv * np.sqrt(ndl * ndl * (F(1.0) - a2) + a2)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                vis = F(0.5) / (ggx_v + ggx_l)
+                v_pdf = vis * vdh * ndl / ndh
+            fc = np.power(F(1.0) - vdh, F(5.0))
+            acc_a = np.where(ok, acc_a + (F(1.0) - fc) * v_pdf, acc_a)
+            acc_b = np.where(ok, acc_b + fc * v_pdf, acc_b)
+        else:
+            sin2h = F(1.0) - ndh * ndh
+            d_c = (F(2.0) + inv_r) * np.power(sin2h, inv_r * F(0.5)) / two_pi
+            with np.errstate(divide="ignore", invalid="ignore"):
+                v_a = np.clip(F(1.0) / (F(4.0) * ((ndl + ndv) - ndl * ndv)), F(0), F(1))
+            acc_c = np.where(ok, acc_c + v_a * d_c * ndl * vdh, acc_c)
+    n = F(nsamp)
+    return (F(4.0) * acc_a) / n, (F(4.0) * acc_b) / n, ((F(4.0) * two_pi) * acc_c) / n
+
+
+def gltf_half(v):
+    h = np.asarray(v, np.float32).astype(np.float16)
+    return h, h.view(np.uint16)
+
+
+def gltf_ggx_table(stride=None):
+    stride = stride or GLTF_STRIDE
+    idx, tc = gltf_texels(stride)
+    R, G, B = gltf_lut("ggx", tc, tc)
+    hR, xR = gltf_half(R)
+    hG, xG = gltf_half(G)
+    header = [
+        "glTF Sample Renderer lut_ggx (u_GGXLUT), rendered once at run time by ibl_filtering.frag's LUT branch (u_distribution = cGGX)",
+        "source: " + GLTF_SRC[0]] + GLTF_SRC[1:] + GLTF_LAYOUT + [
+        "generator: NdotV = texCoord.x, roughness = texCoord.y (perceptual), alpha = roughness^2; V = (sqrt(1 - NdotV^2), 0, NdotV)",
+        "samples: 512 per texel, Hammersley (xi.x = i / 512 -> phi = 2 pi xi.x, xi.y = radical inverse -> cos theta), GGX half vectors",
+        "  with alpha^2, L = normalize(reflect(-V, H)); weight V_SmithGGXCorrelated(NdotV, NdotL) (height-correlated, exact, a2 = roughness^4)",
+        "  * VdotH * NdotL / NdotH, kept where saturate(L.z) > 0",
+        "channels: R = A = 4 sum (1 - Fc) w / 512 (scale), G = B = 4 sum Fc w / 512 (bias), Fc = (1 - VdotH)^5; B channel = 0, alpha = 1;",
+        "  the renderer uses k_S * R + G (k_S = F0 + Fr (1 - NdotV)^5, Fdez-Aguera's roughness-dependent Fresnel) and Ems = 1 - (R + G)",
+        "  columns R_A, G_B = the half values; stride %d (%d x %d of 1024 x 1024 texels)" % (stride, idx.size, idx.size),
+    ]
+    cols = ["i", "j", "NdotV", "roughness", "R_A", "G_B", "R_A_f32", "G_B_f32", "R_half_hex", "G_half_hex"]
+    rows = []
+    for b, j in enumerate(idx):
+        for a, i in enumerate(idx):
+            rows.append([i, j, "%.9g" % tc[a], "%.9g" % tc[b], repr(float(hR[b, a])), repr(float(hG[b, a])),
+                         "%.9g" % R[b, a], "%.9g" % G[b, a], "0x%04x" % xR[b, a], "0x%04x" % xG[b, a]])
+    checks = sanity_split_sum("gltf_ggx", hR, hG, tc, tc, "R", "G")
+    return header, cols, rows, checks
+
+
+def gltf_charlie_table(stride=None):
+    stride = stride or GLTF_STRIDE
+    idx, tc = gltf_texels(stride)
+    _, _, C = gltf_lut("charlie", tc, tc)
+    hC, xC = gltf_half(C)
+    header = [
+        "glTF Sample Renderer lut_charlie (u_CharlieLUT), rendered once at run time by ibl_filtering.frag's LUT branch (u_distribution = cCharlie)",
+        "source: " + GLTF_SRC[0]] + GLTF_SRC[1:] + GLTF_LAYOUT + [
+        "generator: NdotV = texCoord.x, roughness = texCoord.y = sheenRoughness (perceptual); V = (sqrt(1 - NdotV^2), 0, NdotV)",
+        "samples: 512 per texel, Hammersley; half vectors from Charlie(): sinTheta = xi.y^(a / (2a + 1)) with a = roughness^2 (density",
+        "  D_Charlie(a = roughness^2) cos theta_h), phi = 2 pi xi.x; L = normalize(reflect(-V, H)), kept where saturate(L.z) > 0",
+        "  weight: D_Charlie(roughness, NdotH), i.e. the Charlie NDF with alpha = roughness (not squared), * V_Ashikhmin(NdotL, NdotV)",
+        "  = clamp(1 / (4 (NdotL + NdotV - NdotL NdotV)), 0, 1) * NdotL * VdotH; result 4 * 2 pi * sum / 512: the estimator of a",
+        "  uniformly sampled half vector (pdf 1 / 2 pi), so with the Charlie-distributed half vectors it is not an unbiased sheen albedo",
+        "channels: R = G = 0, B = that sum = the sheen directional albedo as the renderer computes it (column B_sheen_E); the renderer",
+        "  multiplies the prefiltered sheen radiance and sheenColor by it; the albedo scaling uses a separate baked texture (lut_sheen_E.png)",
+        "  stride %d (%d x %d of 1024 x 1024 texels)" % (stride, idx.size, idx.size),
+    ]
+    cols = ["i", "j", "NdotV", "roughness", "B_sheen_E", "B_sheen_E_f32", "B_half_hex"]
+    rows = []
+    for b, j in enumerate(idx):
+        for a, i in enumerate(idx):
+            rows.append([i, j, "%.9g" % tc[a], "%.9g" % tc[b], repr(float(hC[b, a])), "%.9g" % C[b, a], "0x%04x" % xC[b, a]])
+    e = hC.astype(np.float64)
+    checks = ["gltf_charlie: B range %.4f .. %.4f; smoothest row (roughness %.5f): NdotV %.5f -> %.4f, NdotV %.5f -> %.4f;"
+              " roughest row (%.5f): %.4f .. %.4f" % (e.min(), e.max(), tc[0], tc[0], e[0, 0], tc[-1], e[0, -1],
+                                                     tc[-1], e[-1].min(), e[-1].max())]
+    checks.append(smoothness("gltf_charlie", "B", e))
+    return header, cols, rows, checks
+
+
+# ---------------------------------------------------------------------------------------------
 # sanity figures
 # ---------------------------------------------------------------------------------------------
 def smoothness(name, label, t):
@@ -489,8 +657,10 @@ ENGINES = {
     "godot_e8387d": ("godot_dfg_e8387d.csv", lambda: godot_table("e8387d")),
     "hdrp_ggx": ("hdrp_fgd_ggx_disney.csv", hdrp_ggx_table),
     "hdrp_charlie": ("hdrp_fgd_charlie.csv", hdrp_charlie_table),
+    "gltf_ggx": ("gltf_lut_ggx.csv", lambda: gltf_ggx_table(GLTF_STRIDE)),
+    "gltf_charlie": ("gltf_lut_charlie.csv", lambda: gltf_charlie_table(GLTF_STRIDE)),
 }
-DEFAULT = ["unreal", "godot", "hdrp_ggx", "hdrp_charlie"]
+DEFAULT = ["unreal", "godot", "hdrp_ggx", "hdrp_charlie", "gltf_ggx", "gltf_charlie"]
 
 
 def write_csv(path, header, cols, rows):
@@ -503,6 +673,17 @@ def write_csv(path, header, cols, rows):
 
 
 def main(argv):
+    global GLTF_STRIDE
+    argv = list(argv)
+    for k in range(len(argv) - 1, 0, -1):                          # --stride N / --stride=N (glTF tables only)
+        a = argv[k]
+        if a == "--stride" or a.startswith("--stride="):
+            val = a.split("=", 1)[1] if "=" in a else (argv[k + 1] if k + 1 < len(argv) else "")
+            if not val.isdigit() or not 1 <= int(val) <= GLTF_RES:
+                print("--stride needs an integer from 1 to %d" % GLTF_RES, file=sys.stderr)
+                return 2
+            GLTF_STRIDE = int(val)
+            del argv[k:k + (1 if "=" in a else 2)]
     if len(argv) < 2 or argv[1] in ("-h", "--help"):
         print(__doc__)
         return 0 if len(argv) >= 2 else 2
@@ -512,12 +693,14 @@ def main(argv):
     for n in names:
         if n == "hdrp":
             expanded += ["hdrp_ggx", "hdrp_charlie"]
+        elif n == "gltf":
+            expanded += ["gltf_ggx", "gltf_charlie"]
         elif n == "all":
             expanded += list(ENGINES)
         elif n in ENGINES:
             expanded.append(n)
         else:
-            print("unknown engine %r; known: %s, hdrp, all" % (n, ", ".join(ENGINES)), file=sys.stderr)
+            print("unknown engine %r; known: %s, hdrp, gltf, all" % (n, ", ".join(ENGINES)), file=sys.stderr)
             return 2
     os.makedirs(out_dir, exist_ok=True)
     for n in expanded:

@@ -196,7 +196,7 @@ def generated(peer, lutbake):
     generators re-implemented by scripts/engine_generators.py (CSV in PEER_DIR), each texel
     compared in the engine's own layout and storage."""
     names = ("unreal_preintegrated_gf.csv", "godot_dfg.csv", "hdrp_fgd_ggx_disney.csv",
-             "hdrp_fgd_charlie.csv")
+             "hdrp_fgd_charlie.csv", "gltf_lut_ggx.csv", "gltf_lut_charlie.csv")
     if not any(os.path.exists(os.path.join(peer, n)) for n in names):
         print("| run-time generators: none in PEER_DIR (scripts/engine_generators.py PEER_DIR) "
               "| | | |")
@@ -258,6 +258,42 @@ def generated(peer, lutbake):
                          f"{float(x['perceptual_roughness']):.4g}" for x in r]
                 report(f"HDRP {file[:-4]} 64x64 10-bit, its generator run here ({key}{label})",
                        diffs, where)
+        # The glTF Sample Renderer's lut_ggx and lut_charlie (1024^2, RGBA16F, 512 samples),
+        # every 16th texel; the preset's PNGs hold row j at roughness (j + 0.5) / 1024 as the
+        # pass does (PNG row 0 uploaded as texture row 0).
+        for k, (file, keys) in enumerate((("lut_ggx.png", (("R_A", 0), ("G_B", 1))),
+                                          ("lut_charlie.png", (("B_sheen_E", 2),)))):
+            path = os.path.join(peer, names[4 + k])
+            if not os.path.exists(path):
+                continue
+            if k == 1:
+                # The preset's lut_charlie.png is 256^2 (the shader's normalised coordinates
+                # take any size): the exact values of its model (Charlie D at alpha = r^2,
+                # Ashikhmin V) at the generator's points instead.
+                r = rows(path)
+                mus = sorted({float(x["NdotV"]) for x in r})
+                rs = sorted({float(x["roughness"]) for x in r})
+                sh = eval_points(lutbake, "sheen_E", mus, rs,
+                                 ("--sheen-visibility", "ashikhmin", "--sheen-alpha", "squared"))
+                diffs = [float(x["B_sheen_E"]) -
+                         sh[(round(float(x["NdotV"]), 12), round(float(x["roughness"]), 12))]
+                         for x in r]
+                where = [f"NdotV {float(x['NdotV']):.4g}, roughness {float(x['roughness']):.4g}"
+                         for x in r]
+                report("glTF Sample Renderer lut_charlie 1024x1024 RGBA16F, its generator run "
+                       "here, every 16th texel (B, against the preset's model)", diffs, where)
+                continue
+            directory = os.path.join(out, "gltf-sample-renderer")
+            if not os.path.exists(directory):
+                bake_preset(lutbake, "gltf-sample-renderer", out)
+            ours = dump_pixels(os.path.join(directory, file))
+            r = rows(path)
+            for key, c in keys:
+                diffs = [float(x[key]) - ours[(int(x["i"]), int(x["j"]))][c] for x in r]
+                where = [f"NdotV {float(x['NdotV']):.4g}, roughness {float(x['roughness']):.4g}"
+                         for x in r]
+                report(f"glTF Sample Renderer {file[:-4]} 1024x1024 RGBA16F, its generator run "
+                       f"here, every 16th texel ({key})", diffs, where)
 
 
 def eevee(path, lutbake):
