@@ -17,6 +17,9 @@ $SUDO apt-get install -y -qq --no-install-recommends \
 # validates it; headless Chromium compiles the WGSL with Tint (WebGPU on its
 # bundled SwiftShader Vulkan) and renders the WebGL2 furnace (SwiftShader GL).
 $SUDO apt-get install -y -qq --no-install-recommends glslang-tools spirv-tools chromium >/dev/null
+# numpy for Debian's python3: tests/presets/engine_generators_test.py reruns
+# the engines' run-time table generators (scripts/engine_generators.py).
+$SUDO apt-get install -y -qq --no-install-recommends python3-numpy >/dev/null
 # nodejs and npm: the KTX2 test parses lutbake's .ktx2 files with the npm
 # package ktx-parse, which it installs under build/npm on first use. Debian's
 # packages unless a node and npm are already there (a NodeSource node 20

@@ -1,0 +1,126 @@
+#!/usr/bin/python3
+"""Presets.EngineGeneratorsRerun (ctest): the engines that build their table at
+run time (Unreal, Godot, Unity HDRP) have it rebuilt here by their generators
+re-implemented in scripts/engine_generators.py, and the unreal, godot and
+unity-hdrp presets' files are compared with it texel for texel in the
+engine's own layout and storage.
+
+What each comparison shows:
+- Unreal (128 samples per texel, unorm16): the preset agrees to the
+  generator's sampling noise; the preset's rows one texel up or down are far
+  worse, so the rows are the engine's.
+- Godot (1024 samples, RG16F): its generator integrates row j at the
+  roughness the shader reads from row j - 1 (the defect the preset names and
+  does not reproduce): against the preset's row j - 1 the Fresnel-weighted
+  channel agrees to 2.2e-4 RMS, against row j it is 15 times worse.
+- HDRP GGX + Disney diffuse (4096 samples, 10-bit unorm): agreement to the
+  generator's noise, the diffuse channel within its 10-bit storage plus
+  noise; transposed, the texture is off by 0.06 or more. The column
+  sqrt(NdotV) = 0 is left out (HDRP integrates it at NdotV = FLT_EPS, the
+  preset at 0).
+The generators are deterministic (fixed sequences), so the bounds, set with a
+margin over the measured values (README "The engines' own tables,
+measured"), cannot flicker.
+
+Usage: /usr/bin/python3 tests/presets/engine_generators_test.py LUTBAKE
+"""
+import contextlib
+import io
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "scripts"))
+
+import numpy as np  # noqa: E402
+
+import engine_generators  # noqa: E402
+import measure_peer_presets  # noqa: E402
+
+failures = []
+
+
+def expect(condition, message):
+    print(("ok     " if condition else "FAILED ") + message)
+    if not condition:
+        failures.append(message)
+
+
+def rms(values):
+    v = np.asarray(values, dtype=float)
+    return float(np.sqrt(np.mean(v * v)))
+
+
+def generated(make):
+    """The generator's texels as dicts (its sanity printout is not wanted here)."""
+    with contextlib.redirect_stdout(io.StringIO()):
+        _, cols, rows, _ = make()
+    return [dict(zip(cols, r)) for r in rows]
+
+
+def main():
+    lutbake = sys.argv[1]
+    with tempfile.TemporaryDirectory() as out:
+        # Unreal: PreIntegratedGF.png, R = A, G = B.
+        texels = generated(engine_generators.unreal_table)
+        ours = measure_peer_presets.dump_pixels(
+            os.path.join(measure_peer_presets.bake_preset(lutbake, "unreal", out),
+                         "PreIntegratedGF.png"))
+        for c, key in enumerate(("A", "B")):
+            same = rms([float(x[key]) - ours[(int(x["i"]), int(x["j"]))][c] for x in texels])
+            up = rms([float(x[key]) - ours[(int(x["i"]), int(x["j"]) + 1)][c]
+                      for x in texels if int(x["j"]) < 31])
+            down = rms([float(x[key]) - ours[(int(x["i"]), int(x["j"]) - 1)][c]
+                        for x in texels if int(x["j"]) > 0])
+            expect(same < (1.2e-2 if key == "A" else 2e-3),
+                   f"Unreal {key}: RMS {same:.3g} within the generator's 128-sample noise")
+            expect(min(up, down) > 2.0 * same,
+                   f"Unreal {key}: one row off is worse (RMS {up:.3g}, {down:.3g})")
+
+        # Godot: dfg.ktx2, R = B, G = E; the generator's row j holds the
+        # roughness of the shader's row j - 1.
+        texels = generated(engine_generators.godot_table)
+        ours = measure_peer_presets.ktx2_half_pixels(
+            os.path.join(measure_peer_presets.bake_preset(lutbake, "godot", out), "dfg.ktx2"))
+        shifted = rms([float(x["R_B"]) - ours[(int(x["i"]), int(x["j"]) - 1)][0]
+                       for x in texels if int(x["j"]) > 0])
+        as_read = rms([float(x["R_B"]) - ours[(int(x["i"]), int(x["j"]))][0] for x in texels])
+        transposed = rms([float(x["R_B"]) - ours[(int(x["j"]), int(x["i"]))][0] for x in texels])
+        expect(shifted < 5e-4, f"Godot R against the preset's row j - 1: RMS {shifted:.3g}")
+        expect(as_read > 5.0 * shifted,
+               f"Godot R against row j (the generator's one-texel defect): RMS {as_read:.3g}")
+        expect(transposed > 0.05, f"Godot R transposed: RMS {transposed:.3g}")
+
+        # HDRP: PreIntegratedFGD_GGXDisneyDiffuse.exr, x = B, y = E, z =
+        # Disney diffuse - 0.5; the engine's 10-bit unorm holds [0, 1].
+        texels = [x for x in generated(engine_generators.hdrp_ggx_table) if int(x["i"]) > 0]
+        directory = os.path.join(out, "unity-hdrp")
+        subprocess.run([lutbake, "bake", "--preset", "unity-hdrp", "--files",
+                        "PreIntegratedFGD_GGXDisneyDiffuse.exr", "--out", directory],
+                       check=True, capture_output=True)
+        ours = measure_peer_presets.dump_pixels(
+            os.path.join(directory, "PreIntegratedFGD_GGXDisneyDiffuse.exr"))
+
+        def held(v):
+            return min(1.0, max(0.0, v))
+
+        for c, (key, bound) in enumerate((("R_x", 1.5e-3), ("G_y", 3.5e-3))):
+            same = rms([float(x[key]) - held(ours[(int(x["i"]), int(x["j"]))][c]) for x in texels])
+            flipped = rms([float(x[key]) - held(ours[(int(x["j"]), int(x["i"]))][c])
+                           for x in texels])
+            expect(same < bound, f"HDRP {key}: RMS {same:.3g} within the generator's noise")
+            expect(flipped > 0.03, f"HDRP {key} transposed: RMS {flipped:.3g}")
+        diffuse = max(abs(float(x["B_z"]) - held(ours[(int(x["i"]), int(x["j"]))][2]))
+                      for x in texels)
+        expect(diffuse < 1e-3,
+               f"HDRP Disney diffuse: max {diffuse:.3g}, its 10-bit storage (4.9e-4) and noise")
+    if failures:
+        print(f"{len(failures)} comparison(s) failed")
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
