@@ -34,6 +34,12 @@ std::vector<std::string> PresetNames() {
 
 namespace {
 
+// Whether `file` is one of the preset's files.
+bool IsFileOf(const Preset &preset, const std::string &file) {
+  return std::any_of(preset.textures.begin(), preset.textures.end(),
+                     [&](const PresetTexture &t) { return t.file == file; });
+}
+
 // What preset.json says of one axis.
 nlohmann::ordered_json AxisJson(const PresetAxis &axis, const char *which) {
   nlohmann::ordered_json j;
@@ -89,8 +95,7 @@ int RunPresetBake(const BakeOptions &o, const std::string &commandLine, CLI::App
     }
     for (size_t k = 0; k < wanted.size(); ++k) {
       const std::string &file = wanted[k];
-      if (std::none_of(preset->textures.begin(), preset->textures.end(),
-                       [&](const PresetTexture &t) { return t.file == file; })) {
+      if (!IsFileOf(*preset, file)) {
         std::cerr << "lutbake bake: --files: " << file << " is not a file of --preset "
                   << preset->name << "; accepted: " << accepted << "\n";
         return 2;
@@ -273,8 +278,15 @@ PresetListing ReadPresetListing(const std::string &manifestPath) {
     if (!(errorMax >= 0.0 && errorMax <= 1.0))
       throw IoError(manifestPath + ": errorMax of " + f["file"].get<std::string>() +
                     " is not in [0, 1]");
-    listing.errorMaxByFile[f["file"].get<std::string>()] = errorMax;
+    // preset.json lists what the bake wrote: every file of the preset, or
+    // those --files chose.
+    const std::string file = f["file"].get<std::string>();
+    if (!IsFileOf(*listing.preset, file))
+      throw IoError(manifestPath + " lists " + file + ", which is not a file of preset " +
+                    listing.preset->name);
+    listing.errorMaxByFile[file] = errorMax;
   }
+  if (listing.errorMaxByFile.empty()) throw IoError(manifestPath + " lists no file");
   return listing;
 }
 
@@ -292,21 +304,6 @@ int CheckPresetDirectory(const std::string &dir, bool json) {
   nlohmann::ordered_json report;
   report["preset"] = preset->name;
   report["files"] = nlohmann::ordered_json::array();
-  // preset.json lists what the bake wrote: every file of the preset, or
-  // those --files chose. Each listed file must be one of the preset's.
-  for (const auto &listed : listing.errorMaxByFile) {
-    const std::string &file = listed.first;  // (clang 14 captures no structured binding)
-    if (std::none_of(preset->textures.begin(), preset->textures.end(),
-                     [&](const PresetTexture &t) { return t.file == file; })) {
-      std::cerr << "lutbake check: " << manifestPath << " lists " << file
-                << ", which is not a file of preset " << preset->name << "\n";
-      return 1;
-    }
-  }
-  if (listing.errorMaxByFile.empty()) {
-    std::cerr << "lutbake check: " << manifestPath << " lists no file\n";
-    return 1;
-  }
   bool allPass = true;
   for (const PresetTexture &texture : preset->textures) {
     const auto listed = listing.errorMaxByFile.find(texture.file);

@@ -96,25 +96,22 @@ const Preset &CyclesPreset() {
     p.textures.push_back(CyclesTable("table_ggx_Eavg", {rough}, "Eavg",
                                      "lookup_table_read(kg, rough, kernel_data.tables.ggx_Eavg, "
                                      "32)"));
-    const char *kRead3D =
-        "lookup_table_read_3D(kg, rough, mu, z, kernel_data.tables.%s, 16, 16, 16), z = "
-        "sqrtf(fabsf((ior - 1) / (ior + 1)))";
-    const char *kRead2D =
-        "lookup_table_read_2D(kg, rough, z, kernel_data.tables.%s, 16, 16), z = "
-        "sqrtf(fabsf((ior - 1) / (ior + 1)))";
-    const auto reading = [](const char *format, const char *table) {
-      std::string text = format;
-      text.replace(text.find("%s"), 2, table);
-      return text;
+    const std::string z = ", z = sqrtf(fabsf((ior - 1) / (ior + 1)))";
+    const auto read3D = [&](const std::string &table) {
+      return "lookup_table_read_3D(kg, rough, mu, z, kernel_data.tables." + table +
+             ", 16, 16, 16)" + z;
+    };
+    const auto read2D = [&](const std::string &table) {
+      return "lookup_table_read_2D(kg, rough, z, kernel_data.tables." + table + ", 16, 16)" + z;
     };
     p.textures.push_back(CyclesTable("table_ggx_glass_E", {rough16, mu16, IorAxis("eta")},
-                                     "glass_E", reading(kRead3D, "ggx_glass_E")));
+                                     "glass_E", read3D("ggx_glass_E")));
     p.textures.push_back(CyclesTable("table_ggx_glass_Eavg", {rough16, IorAxis("eta")},
-                                     "glass_Eavg", reading(kRead2D, "ggx_glass_Eavg")));
+                                     "glass_Eavg", read2D("ggx_glass_Eavg")));
     p.textures.push_back(CyclesTable("table_ggx_glass_inv_E", {rough16, mu16, IorAxis("1/eta")},
-                                     "glass_E", reading(kRead3D, "ggx_glass_inv_E")));
+                                     "glass_E", read3D("ggx_glass_inv_E")));
     p.textures.push_back(CyclesTable("table_ggx_glass_inv_Eavg", {rough16, IorAxis("1/eta")},
-                                     "glass_Eavg", reading(kRead2D, "ggx_glass_inv_Eavg")));
+                                     "glass_Eavg", read2D("ggx_glass_inv_Eavg")));
     p.textures[4].notes = p.textures[5].notes =
         "The view is inside the glass (ior < 1: Cycles reads this table at 1 / ior). Cycles' "
         "shipped table was baked in 2023 by a sampler that kept refracted rays ending on the "

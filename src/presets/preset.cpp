@@ -234,6 +234,16 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
   const auto axisTexel = [](const PresetAxis &axis, int index) {
     return axis.reversed ? axis.count - 1 - index : index;
   };
+  // The settings of the tables the channels read: the model's, the same at
+  // every texel.
+  BakeSettings microfacetSettings;
+  microfacetSettings.smith = model.visibility == PresetVisibility::kSeparable
+                                 ? SmithForm::kSeparable
+                                 : SmithForm::kCorrelated;
+  BakeSettings sheenSettings;
+  sheenSettings.sheenVisibility = model.sheenVisibility;
+  sheenSettings.sheenAlpha =
+      model.sheenAlpha == PresetAlpha::kSquared ? SheenAlpha::kSquared : SheenAlpha::kLinear;
   // One task per row of x; rows of every slice in turn.
   tbb::parallel_for(
       tbb::blocked_range<int>(0, height * depth), [&](const tbb::blocked_range<int> &rows) {
@@ -266,51 +276,33 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
             }
             if (needs.disney) disney = DisneyDiffuseAlbedo(mu, roughness);
             if (needs.splitSum) split = SplitSum(model, mu, alpha);
-            if (needs.sheen) {
-              BakeSettings settings;
-              settings.sheenVisibility = model.sheenVisibility;
-              settings.sheenAlpha = model.sheenAlpha == PresetAlpha::kSquared ? SheenAlpha::kSquared
-                                                                              : SheenAlpha::kLinear;
-              sheen = TableNamed("sheen_E").Evaluate(settings, mu, roughness);
-            }
-            if (needs.f82) {
-              BakeSettings settings;
-              settings.smith = model.visibility == PresetVisibility::kSeparable
-                                   ? SmithForm::kSeparable
-                                   : SmithForm::kCorrelated;
-              f82 = TableNamed("f82").Evaluate(settings, mu, std::sqrt(alpha));
-            }
-            if (needs.average) {
-              BakeSettings settings;
-              settings.smith = model.visibility == PresetVisibility::kSeparable
-                                   ? SmithForm::kSeparable
-                                   : SmithForm::kCorrelated;
-              average = TableNamed("Eavg").Evaluate(settings, std::sqrt(alpha), 0.0);
-            }
+            if (needs.sheen) sheen = TableNamed("sheen_E").Evaluate(sheenSettings, mu, roughness);
+            if (needs.f82)
+              f82 = TableNamed("f82").Evaluate(microfacetSettings, mu, std::sqrt(alpha));
+            if (needs.average)
+              average = TableNamed("Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), 0.0);
             if (needs.glass || needs.glassAverage) {
-              BakeSettings settings;
-              settings.smith = model.visibility == PresetVisibility::kSeparable
-                                   ? SmithForm::kSeparable
-                                   : SmithForm::kCorrelated;
-              const bool absent = std::abs(eta - 1.0) < model.unitEtaWindow;
               // The engine's own index-matched interface: no lobe, albedo 1.
-              if (absent) {
+              if (std::abs(eta - 1.0) < model.unitEtaWindow) {
                 glass.value[0] = glassAverage.value[0] = 1.0;
-              } else if (needs.glass) {
-                glass = TableNamed("glass_E").Evaluate3D(settings, mu, std::sqrt(alpha), eta);
+              } else {
+                if (needs.glass)
+                  glass = TableNamed("glass_E").Evaluate3D(microfacetSettings, mu, std::sqrt(alpha),
+                                                           eta);
+                if (needs.glassAverage)
+                  glassAverage =
+                      TableNamed("glass_Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), eta);
               }
-              if (!absent && needs.glassAverage)
-                glassAverage = TableNamed("glass_Eavg").Evaluate(settings, std::sqrt(alpha), eta);
             }
+            // The single-valued meanings and the integral each reads.
+            const std::pair<const char *, const PointValue *> kSingle[] = {
+                {"sheen_E", &sheen},          {"f82", &f82},
+                {"Eavg", &average},           {"sheen_B", &sheenB},
+                {"disney_diffuse", &disney},  {"glass_E", &glass},
+                {"glass_Eavg", &glassAverage}};
             for (int c = 0; c < table.channels; ++c) {
               const PresetChannel &channel = texture.channels[static_cast<size_t>(c)];
               double value = 0.0, error = 0.0;
-              // The single-valued meanings and the integral each reads.
-              const std::pair<const char *, const PointValue *> kSingle[] = {
-                  {"sheen_E", &sheen},          {"f82", &f82},
-                  {"Eavg", &average},           {"sheen_B", &sheenB},
-                  {"disney_diffuse", &disney},  {"glass_E", &glass},
-                  {"glass_Eavg", &glassAverage}};
               if (channel.meaning == "A" || channel.meaning == "B") {
                 const int k = channel.meaning == "A" ? 0 : 1;
                 value = split.value[k];
