@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The library's layers (README "Layout"): each file includes lutbake headers
 # only from its own layer and the layers below it.
-#   core < models < integrators < tables < formats, plans < validation, presets < cli
+#   core < models < integrators < tables < formats, plans < validation, presets < api < cli
 # formats and plans are side by side, so are validation and presets: neither
 # of a pair includes the other. One awk pass over every file.
 set -euo pipefail
@@ -10,8 +10,8 @@ cd "$repo"
 find include/lutbake src \( -name '*.h' -o -name '*.cpp' \) | sort |
   xargs awk '
     BEGIN {
-      split("core models integrators tables formats plans validation presets cli", names, " ")
-      split("0 1 2 3 4 4 5 5 6", ranks, " ")
+      split("core models integrators tables formats plans validation presets api cli", names, " ")
+      split("0 1 2 3 4 4 5 5 6 7", ranks, " ")
       for (i in names) rank[names[i]] = ranks[i]
     }
     FNR == 1 {

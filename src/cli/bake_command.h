@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "lutbake/api/bake.h"
 #include "lutbake/tables/bake.h"
 #include "plan_command.h"
 #include "sampling_options.h"
@@ -40,8 +41,6 @@ struct BakeOptions {
 NdfKind ParseNdf(const std::string &name);
 SmithForm ParseSmith(const std::string &name);
 FresnelModel ParseFresnel(const std::string &name);
-// Every table name, in the registry's order (the accepted --tables values).
-std::vector<std::string> TableNames();
 
 void SetupBakeCommand(CLI::App &app, BakeOptions &options);
 

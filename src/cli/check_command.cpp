@@ -66,7 +66,7 @@ int RunCheck(const CheckCommandOptions &o) {
                                   static_cast<size_t>(ThreadCount(o.threads)));
   // A preset's directory: its files against the preset (preset_command.h).
   if (std::filesystem::exists(std::filesystem::path(o.dir) / "preset.json", ec))
-    return CheckPresetDirectory(o.dir, o.json);
+    return RunPresetCheck(o.dir, o.json);
   CheckOptions options;
   options.randomPoints = o.points;
   options.furnaceGrid = o.furnaceGrid;

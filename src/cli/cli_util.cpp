@@ -8,8 +8,12 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <iostream>
 #include <sstream>
 #include <thread>
+
+#include "interrupt.h"
+#include "lutbake/core/cancellation.h"
 
 namespace lutbake::cli {
 
@@ -21,11 +25,6 @@ std::vector<std::string> SplitList(const std::string &list) {
   return items;
 }
 
-std::string JoinNames(const std::vector<std::string> &names) {
-  std::string s;
-  for (size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + names[i];
-  return s;
-}
 
 CLI::Validator OneOf(std::vector<std::string> names) {
   const std::string accepted = JoinNames(names);
@@ -98,53 +97,6 @@ CLI::Validator CppNamespace() {
       "C++ namespace");
 }
 
-std::string PrepareOutputDirectory(const std::string &dir, bool *created, bool *usageError) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  *created = false;
-  *usageError = false;
-  if (dir.empty()) {
-    *usageError = true;
-    return "is empty; accepted: a directory, created if missing";
-  }
-  if (fs::exists(dir, ec)) {
-    if (!fs::is_directory(dir, ec)) {
-      *usageError = true;
-      return "exists and is not a directory; accepted: a directory, created if missing";
-    }
-  } else {
-    *created = fs::create_directories(dir, ec);
-    if (ec) return "cannot create the directory: " + ec.message();
-  }
-  // Probe by creating a file, which also catches read-only file systems.
-  // An anonymous one (O_TMPFILE) where the file system has them: the kernel
-  // frees it however the process ends, so a kill never leaves a probe
-  // behind. Elsewhere a named probe, removed at once; a probe left by a
-  // killed run (its pid no longer exists) is removed here.
-  int fd = ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
-  if (fd < 0 && (errno == EOPNOTSUPP || errno == EISDIR || errno == EINVAL)) {
-    for (const auto &entry : fs::directory_iterator(dir, ec)) {
-      const std::string file = entry.path().filename().string();
-      const std::string prefix = ".lutbake-probe-";
-      if (file.rfind(prefix, 0) != 0) continue;
-      const long pid = std::strtol(file.c_str() + prefix.size(), nullptr, 10);
-      if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
-        fs::remove(entry.path(), ec);
-    }
-    const std::string probe =
-        (fs::path(dir) / (".lutbake-probe-" + std::to_string(::getpid()))).string();
-    fd = ::open(probe.c_str(), O_CREAT | O_WRONLY | O_CLOEXEC, 0600);
-    if (fd >= 0) ::unlink(probe.c_str());
-  }
-  if (fd < 0) {
-    const std::string reason = std::strerror(errno);
-    if (*created) fs::remove(dir, ec);
-    return "is not writable: " + reason;
-  }
-  ::close(fd);
-  return {};
-}
-
 int PrepareOutputOrComplain(const std::string &command, const std::string &dir, bool *created) {
   bool usageError = false;
   const std::string problem = PrepareOutputDirectory(dir, created, &usageError);
@@ -189,15 +141,28 @@ void AddThreadsOption(CLI::App &app, int &threads, const std::string &threadsHel
       ->check(InRange(1, 1024, "threads"));
 }
 
+int RunLibraryCall(const std::string &command, const std::string &outDir,
+                   const std::function<void()> &call) {
+  try {
+    call();
+    return 0;
+  } catch (const Cancelled &c) {
+    std::cerr << "lutbake " << command << ": interrupted by " << SignalName(c.reason())
+              << "; nothing written to " << outDir << "\n";
+    return 128 + c.reason();
+  } catch (const Error &e) {
+    std::cerr << "lutbake " << command << ": " << e.what() << "\n";
+    return e.kind() == Error::Kind::kUsage ? 2 : 1;
+  } catch (const std::bad_alloc &) {
+    std::cerr << "lutbake " << command << ": out of memory\n";
+    return 1;
+  }
+}
+
 int ThreadCount(int requested) {
   return requested > 0 ? requested
                        : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
-void RemoveCreatedDirectory(const std::string &dir, bool created) {
-  if (!created) return;
-  std::error_code ec;
-  std::filesystem::remove(dir, ec);  // only succeeds if still empty
-}
 
 }  // namespace lutbake::cli

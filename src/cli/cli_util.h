@@ -5,13 +5,16 @@
 #include <CLI/CLI.hpp>
 #include <cerrno>
 #include <cstdlib>
+#include <functional>
 #include <string>
 #include <vector>
+
+#include "lutbake/api/names.h"
+#include "lutbake/formats/output_transaction.h"
 
 namespace lutbake::cli {
 
 std::vector<std::string> SplitList(const std::string &list);
-std::string JoinNames(const std::vector<std::string> &names);
 
 // A validator that accepts one of `names` and says which ones when it fails.
 CLI::Validator OneOf(std::vector<std::string> names);
@@ -39,15 +42,6 @@ CLI::Validator InRange(T lo, T hi, const std::string &what) {
       "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
 }
 
-// Checks that `dir` is (or can become) a writable directory, creating it if
-// missing. Returns an empty string on success, else the reason; sets
-// *usageError when the problem is the value itself (a file, not a directory).
-std::string PrepareOutputDirectory(const std::string &dir, bool *created, bool *usageError);
-
-// After a failed or interrupted run: removes `dir` if this run created it
-// (PrepareOutputDirectory's *created) and it is still empty.
-void RemoveCreatedDirectory(const std::string &dir, bool created);
-
 // The same, printing "lutbake COMMAND: --out DIR: reason" on failure. Returns
 // 0 when the directory is ready, else the exit status (2 usage, 1 runtime).
 int PrepareOutputOrComplain(const std::string &command, const std::string &dir, bool *created);
@@ -63,6 +57,14 @@ void AddSheenOptions(CLI::App &app, std::string &visibility, std::string &alpha)
 // `threadsHelp` is appended to the --threads help.
 void AddSeedOption(CLI::App &app, uint64_t &seed, const std::string &seedHelp);
 void AddThreadsOption(CLI::App &app, int &threads, const std::string &threadsHelp = "");
+
+// Runs one library call of `command` and maps its failure to the exit
+// status: a lutbake::Error prints "lutbake COMMAND: message" (2 for a
+// usage error, 1 otherwise), a cancellation "interrupted by SIGINT; nothing
+// written to DIR" (128 + the signal), running out of memory "out of
+// memory" (1). Returns 0 when `call` returns.
+int RunLibraryCall(const std::string &command, const std::string &outDir,
+                   const std::function<void()> &call);
 
 // The worker threads to use: `requested`, or all cores when it is 0.
 int ThreadCount(int requested);

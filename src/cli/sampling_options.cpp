@@ -10,12 +10,6 @@ namespace {
 constexpr uint64_t kMaxSamples = uint64_t{1} << 30;
 }  // namespace
 
-std::vector<std::string> EstimatorNames() {
-  std::vector<std::string> names;
-  for (Estimator e : kAllEstimators) names.emplace_back(ToString(e));
-  return names;
-}
-
 Estimator EstimatorNamed(const std::string &name) {
   Estimator e = Estimator::kVisibleNormal;
   ParseEstimator(name, &e);
@@ -64,29 +58,31 @@ void AddSamplingOptions(CLI::App &app, SamplingOptions &o, const std::string &un
   AddSeedOption(app, o.seed, "Seed of the point-set scrambling");
 }
 
+SamplingRequest SamplingRequestOf(const SamplingOptions &o, CLI::App &app) {
+  SamplingRequest r;
+  if (!o.estimator.empty()) r.estimator = EstimatorNamed(o.estimator);
+  r.samples = o.samples;
+  r.replicates = o.replicates;
+  r.tolerance = o.tolerance;
+  r.samplingOnly = o.samplingOnly;
+  if (app.count("--max-samples") > 0) r.maxSamples = o.maxSamples;
+  if (app.count("--seed") > 0) r.seed = o.seed;
+  return r;
+}
+
 int ApplySamplingOptions(const std::string &command, const SamplingOptions &o, BakeSettings *s) {
-  const bool tolerance = o.tolerance > 0.0;
-  const bool samplingAsked = o.samples || o.replicates || o.samplingOnly;
-  s->estimator = samplingAsked ? Estimator::kVisibleNormal : Estimator::kQuadrature;
-  if (!o.estimator.empty()) s->estimator = EstimatorNamed(o.estimator);
-  s->tolerance = o.tolerance;
-  s->samples = o.samples ? o.samples : tolerance ? kToleranceStartSamples : kDefaultSamples;
-  s->replicates = o.replicates ? o.replicates
-                  : tolerance  ? kToleranceReplicates
-                               : kDefaultReplicates;
-  s->allowQuadratureSwitch = !o.samplingOnly;
-  s->maxSamples = o.maxSamples;
-  s->seed = o.seed;
-  if (!tolerance && (o.samplingOnly || o.maxSamples != kDefaultMaxSamples)) {
-    std::cerr << "lutbake " << command
-              << ": --sampling-only and --max-samples apply only with --tolerance\n";
-    return 2;
-  }
-  if (IsQuadrature(s->estimator) && samplingAsked) {
-    std::cerr << "lutbake " << command
-              << ": --samples, --replicates and --sampling-only apply to the sampled estimators, "
-                 "not to --estimator "
-              << ToString(s->estimator) << "\n";
+  SamplingRequest r;
+  if (!o.estimator.empty()) r.estimator = EstimatorNamed(o.estimator);
+  r.samples = o.samples;
+  r.replicates = o.replicates;
+  r.tolerance = o.tolerance;
+  r.samplingOnly = o.samplingOnly;
+  if (o.maxSamples != kDefaultMaxSamples) r.maxSamples = o.maxSamples;
+  r.seed = o.seed;
+  try {
+    ApplySampling(r, s);
+  } catch (const UsageError &e) {
+    std::cerr << "lutbake " << command << ": " << e.what() << "\n";
     return 2;
   }
   return 0;

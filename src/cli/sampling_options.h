@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "lutbake/api/sampling.h"
 #include "lutbake/tables/bake.h"
 
 namespace lutbake::cli {
@@ -21,12 +22,15 @@ struct SamplingOptions {
   uint64_t maxSamples = kDefaultMaxSamples;
 };
 
-// Every estimator's name, and the estimator of a (validated) name.
-std::vector<std::string> EstimatorNames();
+// The estimator of a (validated) name.
 Estimator EstimatorNamed(const std::string &name);
 
 // `unit` names what gets the samples in the help texts: "texel" or "point".
 void AddSamplingOptions(CLI::App &app, SamplingOptions &options, const std::string &unit);
+
+// The request the options describe (lutbake::ApplySampling reads it); `app`
+// tells which options were given.
+SamplingRequest SamplingRequestOf(const SamplingOptions &options, CLI::App &app);
 
 // Copies the options into `settings`. Without --estimator the estimator is
 // the quadrature (to --tolerance, or float32-exact), unless --samples,

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "format_list.h"
 #include "file_io.h"
 #include "lutbake/formats/binary_format.h"
 #include "lutbake/formats/writer.h"
@@ -224,6 +225,11 @@ Table ReadBinaryTable(const std::string &path) {
     for (size_t i = 0; i < count; ++i) table.errors[i] = get(dataOffset + valueBytes * (count + i));
   }
   return table;
+}
+
+std::vector<TableFormat> BinaryFormats() {
+  return {{"bin", ".bin", [](const WriteOptions &o) { return o.binaryValues; }, MakeBinaryWriter,
+           ReadBinaryTable, true}};
 }
 
 }  // namespace lutbake

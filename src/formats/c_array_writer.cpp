@@ -14,6 +14,7 @@
 // (ReadSourceTable).
 #include <sstream>
 
+#include "format_list.h"
 #include "file_io.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/tables/storage.h"
@@ -44,5 +45,10 @@ class CArrayWriter : public TableWriter {
 }  // namespace
 
 std::unique_ptr<TableWriter> MakeCArrayWriter() { return std::make_unique<CArrayWriter>(); }
+
+std::vector<TableFormat> CArrayFormats() {
+  return {{"c-array", ".h", FixedStorage(ValueType::kFloat32), MakeCArrayWriter, ReadSourceTable,
+           false}};
+}
 
 }  // namespace lutbake

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "format_list.h"
 #include "file_io.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/tables/table_definition.h"
@@ -438,5 +439,14 @@ void WriteKullaContyHeader(const std::string &path, const WriteOptions &options,
 }
 
 std::unique_ptr<TableWriter> MakeCppHeaderWriter() { return std::make_unique<CppHeaderWriter>(); }
+
+std::vector<TableFormat> CppHeaderFormats() {
+  return {{"header", ".h",
+           [](const WriteOptions &o) {
+             return o.headerStorage == HeaderStorage::kHalf ? ValueType::kHalf
+                                                             : ValueType::kFloat32;
+           },
+           MakeCppHeaderWriter, {}, true}};
+}
 
 }  // namespace lutbake

@@ -26,6 +26,7 @@
 //        stop after the texels; this trailer is lutbake's, not Microsoft's.
 #include <nlohmann/json.hpp>
 
+#include "format_list.h"
 #include "lutbake/formats/table_reader.h"
 #include "lutbake/formats/writer.h"
 #include "texel_bytes.h"
@@ -145,6 +146,17 @@ Table ReadDdsTable(const std::string &path) {
   ShapeFromMetadata(path, width, static_cast<long>(height) * slices, &table);
   if (table.is3D() != volume) throw IoError(path + ": volume flag does not match axisZ");
   return table;
+}
+
+std::vector<TableFormat> DdsFormats() {
+  std::vector<TableFormat> records;
+  for (const auto &[name, storage] :
+       {std::pair{"dds", ValueType::kFloat32}, std::pair{"dds-half", ValueType::kHalf}}) {
+    const ValueType type = storage;
+    records.push_back({name, ".dds", FixedStorage(type), [type] { return MakeDdsWriter(type); },
+                       ReadDdsTable, true});
+  }
+  return records;
 }
 
 }  // namespace lutbake

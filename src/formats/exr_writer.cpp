@@ -12,6 +12,7 @@
 #include <ImfOutputFile.h>
 #include <ImfStringAttribute.h>
 
+#include "format_list.h"
 #include "lutbake/formats/writer.h"
 
 namespace lutbake {
@@ -60,5 +61,9 @@ class ExrWriter final : public TableWriter {
 }  // namespace
 
 std::unique_ptr<TableWriter> MakeExrWriter() { return std::make_unique<ExrWriter>(); }
+
+std::vector<TableFormat> ExrFormats() {
+  return {{"exr", ".exr", FixedStorage(ValueType::kFloat32), MakeExrWriter, ReadExrTable, true}};
+}
 
 }  // namespace lutbake

@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "file_io.h"
+#include "format_list.h"
 #include "lutbake/formats/source_formats.h"
 #include "source_text.h"
 
@@ -65,6 +66,17 @@ class IncWriter final : public TableWriter {
 
 std::unique_ptr<TableWriter> MakeIncWriter(ValueType storage) {
   return std::make_unique<IncWriter>(storage);
+}
+
+std::vector<TableFormat> IncFormats() {
+  std::vector<TableFormat> records;
+  for (const auto &[name, storage] :
+       {std::pair{"inc", ValueType::kFloat32}, std::pair{"inc-half", ValueType::kHalf}}) {
+    const ValueType type = storage;
+    records.push_back({name, ".inc", FixedStorage(type), [type] { return MakeIncWriter(type); },
+                       ReadSourceTable, true});
+  }
+  return records;
 }
 
 }  // namespace lutbake

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "format_list.h"
 #include "file_io.h"
 #include "lutbake/formats/source_formats.h"
 #include "lutbake/tables/table_definition.h"
@@ -143,6 +144,19 @@ class JsWriter final : public TableWriter {
 
 std::unique_ptr<TableWriter> MakeJsWriter(ValueType storage, bool typescript) {
   return std::make_unique<JsWriter>(storage, typescript);
+}
+
+std::vector<TableFormat> JsFormats() {
+  std::vector<TableFormat> records;
+  for (const bool typescript : {false, true})
+    for (const ValueType type : {ValueType::kFloat32, ValueType::kHalf}) {
+      const std::string stem = typescript ? "ts" : "js";
+      records.push_back({type == ValueType::kHalf ? stem + "-half" : stem, "." + stem,
+                         FixedStorage(type),
+                         [type, typescript] { return MakeJsWriter(type, typescript); },
+                         ReadSourceTable, true});
+    }
+  return records;
 }
 
 }  // namespace lutbake

@@ -34,6 +34,7 @@
 //        fastest, then y (row 0 = texel row 0), then z; channels interleaved.
 #include <nlohmann/json.hpp>
 
+#include "format_list.h"
 #include "lutbake/formats/table_reader.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/tables/bake.h"
@@ -202,6 +203,17 @@ Table ReadKtx2Table(const std::string &path) {
                   std::to_string(count * typeSize) + " expected");
   table.values = r.Values(levelOffset, count, storage);
   return table;
+}
+
+std::vector<TableFormat> Ktx2Formats() {
+  std::vector<TableFormat> records;
+  for (const auto &[name, storage] : {std::pair{"ktx2", ValueType::kFloat32},
+                                      std::pair{"ktx2-half", ValueType::kHalf}}) {
+    const ValueType type = storage;
+    records.push_back({name, ".ktx2", FixedStorage(type), [type] { return MakeKtx2Writer(type); },
+                       ReadKtx2Table, true});
+  }
+  return records;
 }
 
 }  // namespace lutbake

@@ -24,6 +24,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "format_list.h"
 #include "file_io.h"
 #include "lutbake/formats/table_reader.h"
 #include "lutbake/formats/writer.h"
@@ -249,6 +250,13 @@ Table ReadPngTable(const std::string &path) {
       table.values.push_back(v / top);
     }
   return table;
+}
+
+std::vector<TableFormat> PngFormats() {
+  return {{"png8", ".png", FixedStorage(ValueType::kUnorm8), [] { return MakePngWriter(8); },
+           ReadPngTable, true},
+          {"png16", ".png", FixedStorage(ValueType::kUnorm16), [] { return MakePngWriter(16); },
+           ReadPngTable, true}};
 }
 
 }  // namespace lutbake

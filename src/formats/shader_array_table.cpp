@@ -20,6 +20,7 @@
 // is a var<private>. Metal: it includes metal_stdlib.
 #include <sstream>
 
+#include "format_list.h"
 #include "file_io.h"
 #include "lutbake/formats/source_formats.h"
 #include "source_text.h"
@@ -124,6 +125,17 @@ class ShaderArrayWriter final : public TableWriter {
 
 std::unique_ptr<TableWriter> MakeShaderArrayWriter(ShaderLanguage language) {
   return std::make_unique<ShaderArrayWriter>(language);
+}
+
+std::vector<TableFormat> ShaderArrayFormats() {
+  std::vector<TableFormat> records;
+  for (const ShaderLanguage language :
+       {ShaderLanguage::kGlsl, ShaderLanguage::kHlsl, ShaderLanguage::kWgsl, ShaderLanguage::kMsl})
+    records.push_back({std::string(ToString(language)) + "-array", ShaderExtension(language),
+                       FixedStorage(ValueType::kFloat32),
+                       [language] { return MakeShaderArrayWriter(language); }, ReadSourceTable,
+                       true});
+  return records;
 }
 
 }  // namespace lutbake

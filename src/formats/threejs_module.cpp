@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "format_list.h"
 #include "file_io.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/tables/storage.h"
@@ -62,5 +63,10 @@ class ThreejsDfgWriter : public TableWriter {
 }  // namespace
 
 std::unique_ptr<TableWriter> MakeThreejsDfgWriter() { return std::make_unique<ThreejsDfgWriter>(); }
+
+std::vector<TableFormat> ThreejsFormats() {
+  return {{"threejs-dfg", ".js", FixedStorage(ValueType::kHalf), MakeThreejsDfgWriter,
+           ReadSourceTable, false}};
+}
 
 }  // namespace lutbake

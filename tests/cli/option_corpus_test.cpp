@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "cli/app.h"
-#include "cli/preset_command.h"
+#include "lutbake/api/presets.h"
 #include "fuzz/cli_input.h"
 #include "lutbake/formats/writer.h"
 
@@ -52,7 +52,7 @@ TEST(FuzzCorpus, PresetListingsAreReadOrRefused) {
     ++inputs;
     const std::string path = entry.path().string();
     try {
-      const cli::PresetListing listing = cli::ReadPresetListing(path);
+      const PresetListing listing = ReadPresetListing(path);
       EXPECT_NE(listing.preset, nullptr) << path;
       for (const auto &[file, errorMax] : listing.errorMaxByFile)
         EXPECT_TRUE(errorMax >= 0.0 && errorMax <= 1.0) << path << ": " << file;

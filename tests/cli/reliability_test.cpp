@@ -24,7 +24,7 @@
 #include <thread>
 #include <vector>
 
-#include "cli/preset_command.h"
+#include "lutbake/api/presets.h"
 #include "lutbake/formats/atomic_output.h"
 #include "lutbake/formats/binary_format.h"
 #include "lutbake/formats/table_reader.h"
@@ -291,7 +291,7 @@ TEST(Reliability, KillsDuringAPresetBakeNeverLeaveAMixedSet) {
       std::string of;
       try {
         if (name == "preset.json") {
-          lutbake::cli::ReadPresetListing(entry.path().string());  // whole JSON
+          lutbake::ReadPresetListing(entry.path().string());  // whole JSON
           const std::string text = ReadAll(entry.path()), key = "\"commandLine\": \"";
           const size_t at = text.find(key);
           if (at != std::string::npos)

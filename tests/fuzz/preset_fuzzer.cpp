@@ -9,13 +9,13 @@
 
 #include "fuzz_input.h"
 #include "lutbake/formats/writer.h"
-#include "cli/preset_command.h"
+#include "lutbake/api/presets.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   static lutbake::fuzz::InputFile file;
   const std::string &path = file.Hold(data, size);
   try {
-    const lutbake::cli::PresetListing listing = lutbake::cli::ReadPresetListing(path);
+    const lutbake::PresetListing listing = lutbake::ReadPresetListing(path);
     if (!listing.preset) std::abort();
     for (const auto &[name, errorMax] : listing.errorMaxByFile)
       if (!(errorMax >= 0.0 && errorMax <= 1.0)) std::abort();

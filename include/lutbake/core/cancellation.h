@@ -6,14 +6,15 @@
 #pragma once
 
 #include <atomic>
-#include <stdexcept>
+
+#include "lutbake/core/error.h"
 
 namespace lutbake {
 
 // Thrown by work that found its token cancelled; carries the token's reason.
-class Cancelled : public std::runtime_error {
+class Cancelled : public Error {
  public:
-  explicit Cancelled(int reason) : std::runtime_error("cancelled"), reason_(reason) {}
+  explicit Cancelled(int reason) : Error(Kind::kCancelled, "cancelled"), reason_(reason) {}
   int reason() const noexcept { return reason_; }
 
  private:

@@ -9,16 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "lutbake/core/error.h"
 #include "lutbake/tables/storage.h"
 #include "lutbake/tables/table.h"
 
 namespace lutbake {
-
-// A file could not be read or written: a runtime failure, not a bug.
-class IoError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 // How a generated header stores its values: float (exact float32, as the
 // EXR and .bin hold them) or IEEE 754 half (binary16 bit patterns in

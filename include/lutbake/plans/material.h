@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "lutbake/core/error.h"
 #include "lutbake/models/fresnel.h"
 #include "lutbake/models/ndf.h"
 #include "lutbake/models/smith.h"
@@ -20,9 +21,9 @@ namespace lutbake {
 // file and the place in it (a JSON pointer such as
 // /materials/3/pbrMetallicRoughness/roughnessFactor, or a byte offset), the
 // value found and what is accepted.
-class InputError : public std::runtime_error {
+class InputError : public Error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit InputError(const std::string &message) : Error(Kind::kRuntime, message) {}
 };
 
 // The perceptual roughness one specular layer can take: exactly `min` when
