@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Each engine's own shipped table against lutbake's exact values in the engine's layout:
-max and RMS difference, and where the max is (README "Engine presets").
+max and RMS difference, and where the max is (docs/presets.md).
 
 Usage:
     /usr/bin/python3 tools/measure_peer_presets.py PEER_DIR LUTBAKE [CYCLES_DIR]

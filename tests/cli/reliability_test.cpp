@@ -322,8 +322,8 @@ TEST(Reliability, KillsDuringAPresetBakeNeverLeaveAMixedSet) {
     WaitFor(pid, std::chrono::seconds(60));
     // The directory held a whole set before: it holds one, old or new, or
     // (a kill within the commit's renames) part of one run's set, possibly
-    // none of it, and the named temporaries the next run removes (README
-    // "Reliability").
+    // none of it, and the named temporaries the next run removes
+    // (docs/reliability.md).
     const size_t finals = expectOneRun("kill " + std::to_string(kill));
     EXPECT_TRUE(finals == 3u || temporaries > 0u)
         << "kill " << kill << ": " << finals << " files, " << temporaries << " temporaries";
