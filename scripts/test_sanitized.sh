@@ -6,11 +6,11 @@
 # the same commit's two builds compared byte for byte: build/ (g++, Release)
 # and build-asan/ (clang++) bake every table, format, shader language and
 # several presets (scripts/compare_compilers.sh). scripts/test.sh calls this
-# after the main suite; README "Reliability" has the subset and its time.
+# after the main suite; docs/reliability.md has the subset and its time.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build-asan -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DLUTBAKE_SANITIZE=ON >/dev/null
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DLUTBAKE_SANITIZE=ON -DLUTBAKE_REQUIRE_TEST_PACKAGES=ON >/dev/null
 cmake --build build-asan -j"$(nproc)" --target lutbake_tests lutbake_image_tests lutbake
 # The subset (the sanitizer build compiles only its test files, CMakeLists
 # LUTBAKE_SANITIZED_TEST_SOURCES): the readers and writers with the hostile

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The library's layers (README "Layout"): each file includes lutbake headers
+# The library's layers (docs/layout.md): each file includes lutbake headers
 # only from its own layer and the layers below it.
 #   core < models < integrators < tables < formats, plans < validation, presets < api < cli
 # formats and plans are side by side, so are validation and presets: neither

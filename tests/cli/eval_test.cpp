@@ -76,7 +76,7 @@ TEST(Eval, ExtremeGridWithToleranceOneE6) {
 
 TEST(Eval, ExtremeGridSampledAtTheBakesDefault) {
   // --samples 65536 is the bake's default: within 1e-4 everywhere (the
-  // measured worst is 7.9e-5, README "Extreme corners").
+  // measured worst is 7.9e-5, docs/tables.md "Extreme corners").
   CheckGrid("--ndf ggx", "--samples 65536", 1e-4);
 }
 

@@ -40,8 +40,8 @@ TEST(FuzzCorpus, CommandLinesParseOrAreRefused) {
       ++refused;
     }
   }
-  EXPECT_GE(inputs, 60u);  // the bad-input corpus and the README's examples
-  EXPECT_GT(parsed, 0u);   // the README's examples parse
+  EXPECT_GE(inputs, 60u);  // the bad-input corpus and the docs' examples
+  EXPECT_GT(parsed, 0u);   // the docs' examples parse
   EXPECT_GT(refused, 0u);  // the bad inputs are refused (some only when run)
 }
 

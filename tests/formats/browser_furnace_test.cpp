@@ -27,7 +27,7 @@
 // convention of tables sampled at their edges) reads the average of two
 // neighbours instead: B = (1 - mu)^5-like near mu = 0 changes by ~0.1 per
 // texel there, ~50 times the largest allowance, so the test fails (tried:
-// see the README, "Browser test"). The page posts its pixels to a loopback
+// see docs/formats.md, "Browser test"). The page posts its pixels to a loopback
 // server (support/headless_chromium.h).
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Seeds of the fuzz corpora (tests/fuzz/corpus/READER/seed-*): small tables
 # written by `lutbake bake` in every format, and command lines for the cli
-# target from tests/data/bad_inputs.tsv and the README's examples (one
+# target from tests/data/bad_inputs.tsv and the examples of README.md and docs/ (one
 # argument per line). Run once when a corpus is started; scripts/fuzz.sh
 # then grows and merges the corpora.
 #
@@ -65,7 +65,7 @@ done
 cp "$scratch/preset-cycles/table_ggx_E.h" "$corpus/source/seed-cycles-table_ggx_E.h"
 
 python3 - "$corpus/cli" <<'PY'
-import re, shlex, sys
+import glob, re, shlex, sys
 out = sys.argv[1]
 lines = []
 for row in open("tests/data/bad_inputs.tsv"):
@@ -74,8 +74,8 @@ for row in open("tests/data/bad_inputs.tsv"):
     fields = row.rstrip("\n").split("\t")
     if len(fields) >= 2:
         lines.append(fields[1])
-for text in open("README.md"):
-    m = re.match(r"^(?:\$ )?lutbake ((?:bake|plan|eval|check|report|furnace)\b.*)$", text.strip())
+for text in (t for p in ["README.md"] + sorted(glob.glob("docs/*.md")) for t in open(p)):
+    m = re.match(r"^(?:\$ )?(?:\./build/)?lutbake ((?:bake|plan|eval|check|report|furnace)\b.*)$", text.strip())
     if m:
         lines.append(m.group(1).split("  #")[0])
 for i, line in enumerate(lines):

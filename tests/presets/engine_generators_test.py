@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Presets.EngineGeneratorsRerun (ctest): the engines that build their table at
 run time (Unreal, Godot, Unity HDRP) have it rebuilt here by their generators
-re-implemented in scripts/engine_generators.py, and the unreal, godot and
+re-implemented in tests/presets/engine_generators.py, and the unreal, godot and
 unity-hdrp presets' files are compared with it texel for texel in the
 engine's own layout and storage.
 
@@ -19,8 +19,8 @@ What each comparison shows:
   sqrt(NdotV) = 0 is left out (HDRP integrates it at NdotV = FLT_EPS, the
   preset at 0).
 The generators are deterministic (fixed sequences), so the bounds, set with a
-margin over the measured values (README "The engines' own tables,
-measured"), cannot flicker.
+margin over the measured values (docs/presets.md, "The engines' own
+tables, measured"), cannot flicker.
 
 Usage: /usr/bin/python3 tests/presets/engine_generators_test.py LUTBAKE
 """
@@ -32,7 +32,11 @@ import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "scripts"))
+# engine_generators.py (the oracle) lies beside this file; the table readers
+# (oiiotool dump, KTX2 RG16F) and the preset bake come from the peer
+# measurement of tools/measure_peer_presets.py.
+sys.path.insert(0, HERE)
+sys.path.insert(1, os.path.join(HERE, "..", "..", "tools"))
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree from a test run
 
 import numpy as np  # noqa: E402

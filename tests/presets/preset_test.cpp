@@ -73,7 +73,7 @@ TEST(Presets, CyclesEdgeTexelsMatchCyclesAndTheReference) {
 // Cycles' glass tables at a quarter of their texels in each axis: an axis
 // of 4 edge texels puts u at 0, 1/3, 2/3, 1, Cycles' texels 0, 5, 10, 15 of
 // 16. The eta > 1 table agrees with Cycles' own (2^23 samples, 6 decimals:
-// within 1.3e-5 at all 4096 texels, README "Cycles' glass tables,
+// within 1.3e-5 at all 4096 texels, docs/presets.md "Cycles' glass tables,
 // measured"), which shows the layout: x = rough, y = mu, z = the IOR axis;
 // both tables agree with the independent adaptive reference at exactly
 // those points; slice 0 (ior = 1) is 1. Cycles' shipped inverse table holds
@@ -226,7 +226,7 @@ TEST(Presets, CyclesGlassPresetJsonAndCheck) {
   EXPECT_EQ(f["model"]["unitEtaWindow"], 1e-4);
   // Float32-exact: the integration bound and float32 rounding together.
   // (The inside table's errorMax is 4.9e-7, where Cycles' grid puts the view
-  // on a kink of the inside albedo: README, "Engine presets".)
+  // on a kink of the inside albedo: docs/presets.md.)
   EXPECT_LT(f["errorMax"].get<double>(), 6e-8);
   const Table read = ReadSourceTable((dir / "table_ggx_glass_E.h").string());
   EXPECT_EQ(read.values.size(), 4096u);

@@ -52,7 +52,7 @@ TEST(Bake, DefaultSamplesMeetOneE4AgainstQuadrature) {
 
 TEST(Bake, ErrorBoundsHoldForNinetyNinePercentOfInteriorTexels) {
   // The bound is a 99% Student-t interval; away from the smoothest rows
-  // (where the GGX tail makes misses a rare event, see README) at most a few
+  // (where the GGX tail makes misses a rare event, see docs/accuracy-and-speed.md) at most a few
   // percent of texels may exceed it. 64 texels: allow 4.
   const Table t = BakeTable(TableNamed("E"), Small(8, 4096));
   int exceed = 0;

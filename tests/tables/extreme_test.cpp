@@ -147,7 +147,7 @@ TEST(ExtremeGrid, SampledEstimateIsWithinItsBoundAndOneE4) {
     const double errB = std::abs(sampled[i].value[1] - truth[i].B);
     EXPECT_LE(errA, sampled[i].error[0]) << Name(grid[i]);
     EXPECT_LE(errB, sampled[i].error[1]) << Name(grid[i]);
-    // The measured worst over 16 seeds was 7.9e-5 (README, "Extreme corners").
+    // The measured worst over 16 seeds was 7.9e-5 (docs/tables.md, "Extreme corners").
     EXPECT_LE(std::max(errA, errB), 1e-4) << Name(grid[i]);
     EXPECT_TRUE(std::isfinite(sampled[i].value[0]) && std::isfinite(sampled[i].value[1]));
   }

@@ -1,6 +1,6 @@
 // The .bin table format, version 1. Little-endian throughout; every field at
-// a fixed offset so that it can be read without lutbake (README, "The .bin
-// format", has the same table and a 10-line Python reader).
+// a fixed offset so that it can be read without lutbake (docs/formats.md,
+// "The .bin format", has the same table and a 10-line Python reader).
 //
 //   offset size  type      field
 //   0      8     char[8]   magic "LUTBAKE\0"

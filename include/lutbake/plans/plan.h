@@ -2,7 +2,7 @@
 // they need, over only the ranges they use, and why every other table is
 // left out.
 //
-// Rules (README, "Bake plans"):
+// Rules (docs/plans.md):
 //   - Unlit materials, and materials with no specular lobe, need nothing.
 //   - dfg (split-sum IBL) for the materials shaded with image-based lighting;
 //     E and E_avg for those with Kulla-Conty energy compensation. Both are

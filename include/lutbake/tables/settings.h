@@ -48,8 +48,8 @@ bool ParseEstimator(std::string_view name, Estimator *estimator);
 inline constexpr double kDefaultQuadratureTolerance = 1e-8;
 // Samples per texel of E and dfg when a sampled estimator is asked for
 // without --samples: the smallest power of two at which every checked texel
-// of a bake measured within 1e-4 of the reference (README;
-// scripts/measure_default_error.sh reproduces it).
+// of a bake measured within 1e-4 of the reference (docs/accuracy-and-speed.md;
+// tools/measure_default_error.sh reproduces it).
 inline constexpr uint64_t kDefaultSamples = 65536;
 // First round of a tolerance run: samples per texel before the first check.
 inline constexpr uint64_t kToleranceStartSamples = 1024;

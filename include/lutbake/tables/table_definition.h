@@ -127,7 +127,7 @@ struct TableRelations {
   double atMostFactor = 1.0;
   // The transmitted part T = this - reciprocalMinus (glass_Eavg -
   // spec_Eavg) obeys T(eta) = eta^2 T(1 / eta) over a y axis of eta
-  // (reciprocity of the BTDF, README "Rough glass"); checked at every pair
+  // (reciprocity of the BTDF, docs/tables.md "Rough glass"); checked at every pair
   // of slices eta, 1 / eta that both tables hold.
   std::string reciprocalMinus;
 };

@@ -5,7 +5,7 @@ engine's own table". Each table is written in the engine's own memory layout, af
 storage quantisation (unorm16, half float, 10-bit unorm), as a CSV with '#' header lines.
 
 Usage:
-    /usr/bin/python3 scripts/engine_generators.py OUT_DIR [--stride N] [engine ...]
+    /usr/bin/python3 tests/presets/engine_generators.py OUT_DIR [--stride N] [engine ...]
 
 engines (default: unreal godot hdrp_ggx hdrp_charlie gltf_ggx gltf_charlie):
   unreal         -> unreal_preintegrated_gf.csv

@@ -7,7 +7,7 @@ with lutbake's exact values (`lutbake eval --table sheen_E ... --json`, each wit
 bound, at most ~1e-7 at the points used).
 
 Usage:
-    /usr/bin/python3 scripts/measure_peer_sheen.py PEER_DIR LUTBAKE [--khronos-stride N] [--grid N]
+    /usr/bin/python3 tools/measure_peer_sheen.py PEER_DIR LUTBAKE [--khronos-stride N] [--grid N]
 
 PEER_DIR holds the peer files below, as saved by hand from the public repositories (nothing of
 them is bundled with lutbake). LUTBAKE is the lutbake binary. The Markdown report goes to stdout,

@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """Each engine's own shipped table against lutbake's exact values in the engine's layout:
-max and RMS difference, and where the max is (README "Engine presets").
+max and RMS difference, and where the max is (docs/presets.md).
 
 Usage:
-    /usr/bin/python3 scripts/measure_peer_presets.py PEER_DIR LUTBAKE [CYCLES_DIR]
+    /usr/bin/python3 tools/measure_peer_presets.py PEER_DIR LUTBAKE [CYCLES_DIR]
 
 PEER_DIR holds the peers' tables as CSV (extracted from each project's source, conventions in
 each file's comments; not bundled except the five under tests/data/presets/):
@@ -193,12 +193,12 @@ def bake_preset(lutbake, name, out):
 
 def generated(peer, lutbake):
     """The engines that build their table at run time (Unreal, Godot, HDRP), against their
-    generators re-implemented by scripts/engine_generators.py (CSV in PEER_DIR), each texel
+    generators re-implemented by tests/presets/engine_generators.py (CSV in PEER_DIR), each texel
     compared in the engine's own layout and storage."""
     names = ("unreal_preintegrated_gf.csv", "godot_dfg.csv", "hdrp_fgd_ggx_disney.csv",
              "hdrp_fgd_charlie.csv", "gltf_lut_ggx.csv", "gltf_lut_charlie.csv")
     if not any(os.path.exists(os.path.join(peer, n)) for n in names):
-        print("| run-time generators: none in PEER_DIR (scripts/engine_generators.py PEER_DIR) "
+        print("| run-time generators: none in PEER_DIR (tests/presets/engine_generators.py PEER_DIR) "
               "| | | |")
         return
     with tempfile.TemporaryDirectory() as out:

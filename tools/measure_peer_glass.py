@@ -3,7 +3,7 @@
 dielectric-reflection factor table, each read under its OWN conventions, against exact values.
 
 Usage:
-    /usr/bin/python3 scripts/measure_peer_glass.py PEER LUTBAKE [--reference-csv CSV]
+    /usr/bin/python3 tools/measure_peer_glass.py PEER LUTBAKE [--reference-csv CSV]
         [--python] [--stride N] [--cache FILE]
 
 PEER is a directory holding the cycles_*.csv files of tests/data/glass/peers/ (written by
