@@ -143,6 +143,20 @@ TEST(BurleyTable, StatedBoundsHold) {
       worst, worstStored, worstStoredBound);
 }
 
+// check's range claim holds for every stored value: the extremes, stored
+// in half or float32, stay inside it, though half rounds across 785/504
+// itself at the first texel of a 4096-texel axis.
+TEST(BurleyTable, RangeClaimHoldsForStoredValues) {
+  const ValueClaim claim = TableNamed("burley_E").Range({});
+  for (ValueType type : {ValueType::kFloat32, ValueType::kHalf, ValueType::kFloat64}) {
+    EXPECT_GE(StoredValue(BurleyE(0.0, 0.0), type), claim.lower) << ToString(type);
+    EXPECT_LE(StoredValue(BurleyE(0.0, 1.0), type), claim.upper) << ToString(type);
+  }
+  const double nearCorner = BurleyE(0.5 / 4096, 1.0 - 0.5 / 4096);
+  EXPECT_LT(nearCorner, 785.0 / 504.0);
+  EXPECT_GT(StoredValue(nearCorner, ValueType::kHalf), 785.0 / 504.0);
+}
+
 // check's reference, nested adaptive Gauss-Kronrod of the BRDF, is another
 // computation that agrees within its bound.
 TEST(BurleyTable, ReferenceAgreesWithTheClosedForm) {
