@@ -19,7 +19,7 @@ formats="exr,bin,header,png8,ktx2,dds,inc,js,ts,glsl-array,hlsl-array,wgsl-array
 formats2="png16,ktx2-half,dds-half,inc-half,js-half,ts-half"
 bakes=(
   "--tables E,Eavg,Favg,dfg,sheen_E,sheen_Eavg,f82,glass_E,glass_Eavg,spec_E,spec_Eavg --size 6 --eta-size 3 --tolerance 1e-6 --format $formats --error-map --shader glsl,hlsl,wgsl,msl"
-  "--tables E,Eavg,Favg,dfg,sheen_E,sheen_Eavg,f82,glass_E,spec_E --size 6 --eta-size 3 --tolerance 1e-6 --format $formats2 --header-type half --bin-type double"
+  "--tables E,Eavg,Favg,dfg,sheen_E,sheen_Eavg,f82,glass_E,spec_E --size 6 --eta-size 3 --tolerance 1e-6 --format $formats2,header,bin --header-type half --bin-type double"
   "--tables E,Eavg,dfg,sheen_E --size 6 --samples 64 --format exr,bin,header"
   "--tables E,Eavg,dfg --size 6 --ndf beckmann --smith separable --format exr,bin,header"
   "--tables sheen_E,sheen_Eavg --size 6 --sheen-visibility ashikhmin --sheen-alpha squared --format exr,bin,header"

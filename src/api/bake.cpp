@@ -464,6 +464,7 @@ BakeResult Bake(const BakeRequest &r) {
   }
   if (!r.preset.empty()) return BakePreset(r);
   ValidateTableNames(r);
+  ValidateApplicability(r);
   const BakeSettings settings = SettingsOf(r);
   const JobList list = MakeJobs(r, settings);
   BakeResult result;

@@ -56,7 +56,8 @@ void RefuseFixedOptions(const BakeRequest &r) {
       {"--manifest", !r.manifests.empty()},
       {"--no-ibl", r.noIbl},
       {"--no-compensation", r.noCompensation},
-      {"--skip-unsupported", r.skipUnsupported}};
+      {"--skip-unsupported", r.skipUnsupported},
+      {"--shader", !r.shaders.empty()}};
   for (const auto &[flag, given] : fixed)
     if (given)
       throw UsageError(std::string(flag) + " cannot be combined with --preset " + r.preset +

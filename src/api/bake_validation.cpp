@@ -1,0 +1,114 @@
+// The options of a bake request that do not apply to what it asks for: an
+// option set for no table or file of the request is refused (UsageError,
+// naming the option, what it applies to and what was asked), never ignored.
+#include <algorithm>
+#include <set>
+
+#include "bake_internal.h"
+#include "lutbake/api/names.h"
+#include "lutbake/core/error.h"
+#include "lutbake/tables/table_definition.h"
+
+namespace lutbake {
+
+namespace {
+
+// The tables whose definitions satisfy `uses`, as "A, B".
+template <typename Uses>
+std::string TablesThat(Uses uses) {
+  std::vector<std::string> names;
+  for (const TableDefinition *table : AllTables())
+    if (uses(*table)) names.push_back(table->Name());
+  return JoinNames(names);
+}
+
+void RequireTableUsing(const std::vector<const TableDefinition *> &asked, const std::string &asText,
+                       const std::string &option, const std::string &what,
+                       bool (*uses)(const TableDefinition &, const std::string &)) {
+  for (const TableDefinition *table : asked)
+    if (uses(*table, what)) return;
+  throw UsageError("--" + option + " does not apply to --tables " + asText + "; it applies to " +
+                   TablesThat([&](const TableDefinition &t) { return uses(t, what); }));
+}
+
+bool HasModelOption(const TableDefinition &table, const std::string &option) {
+  const std::vector<std::string> options = table.ModelOptions();
+  return std::find(options.begin(), options.end(), option) != options.end();
+}
+bool Is3D(const TableDefinition &table, const std::string &) { return table.DefaultDepth() > 1; }
+bool IsSampled(const TableDefinition &table, const std::string &) { return table.Sampled(); }
+
+void RequireFormat(const BakeRequest &r, const std::string &option, const std::string &format) {
+  const std::vector<std::string> formats = r.formats.value_or(DefaultFormats());
+  if (std::find(formats.begin(), formats.end(), format) == formats.end())
+    throw UsageError("--" + option + " applies to the " + format + " format; --format " +
+                     JoinList(formats) + " writes none");
+}
+
+// C++'s keywords, which no namespace may be called.
+bool IsCppKeyword(const std::string &word) {
+  static const std::set<std::string> keywords = {
+      "alignas", "alignof", "and", "and_eq", "asm", "auto", "bitand", "bitor", "bool", "break",
+      "case", "catch", "char", "char8_t", "char16_t", "char32_t", "class", "compl", "concept",
+      "const", "consteval", "constexpr", "constinit", "const_cast", "continue", "co_await",
+      "co_return", "co_yield", "decltype", "default", "delete", "do", "double", "dynamic_cast",
+      "else", "enum", "explicit", "export", "extern", "false", "float", "for", "friend", "goto",
+      "if", "inline", "int", "long", "mutable", "namespace", "new", "noexcept", "not", "not_eq",
+      "nullptr", "operator", "or", "or_eq", "private", "protected", "public", "register",
+      "reinterpret_cast", "requires", "return", "short", "signed", "sizeof", "static",
+      "static_assert", "static_cast", "struct", "switch", "template", "this", "thread_local",
+      "throw", "true", "try", "typedef", "typeid", "typename", "union", "unsigned", "using",
+      "virtual", "void", "volatile", "wchar_t", "while", "xor", "xor_eq"};
+  return keywords.count(word) > 0;
+}
+
+}  // namespace
+
+std::string NamespaceProblem(const std::string &name) {
+  size_t start = 0;
+  while (true) {
+    const size_t end = name.find("::", start);
+    const std::string part = name.substr(start, end == std::string::npos ? end : end - start);
+    if (IsCppKeyword(part))
+      return "'" + name + "': " + part + " is a C++ keyword; accepted: a C++ namespace name (e.g. "
+             "my_engine::luts)";
+    if (end == std::string::npos) return "";
+    start = end + 2;
+  }
+}
+
+void ValidateApplicability(const BakeRequest &r) {
+  if (r.headerNamespace) {
+    if (const std::string problem = NamespaceProblem(*r.headerNamespace); !problem.empty())
+      throw UsageError("--namespace " + problem);
+    RequireFormat(r, "namespace", "header");
+  }
+  if (r.headerType) RequireFormat(r, "header-type", "header");
+  if (r.binType) RequireFormat(r, "bin-type", "bin");
+  // With a plan the plan picks the tables (and refuses the model options).
+  if (!r.scenes.empty() || !r.manifests.empty()) return;
+  const std::vector<std::string> names = r.tables.value_or(
+      std::vector<std::string>{"E", "Eavg", "Favg", "dfg"});
+  std::vector<const TableDefinition *> asked;
+  for (const std::string &name : names) asked.push_back(&TableNamed(name));
+  const std::string asText = JoinList(names);
+  const std::pair<const char *, bool> models[] = {
+      {"ndf", r.ndf.has_value()},
+      {"smith", r.smith.has_value()},
+      {"fresnel", r.fresnel.has_value()},
+      {"sheen-visibility", r.sheenVisibility.has_value()},
+      {"sheen-alpha", r.sheenAlpha.has_value()}};
+  for (const auto &[option, given] : models)
+    if (given) RequireTableUsing(asked, asText, option, option, HasModelOption);
+  if (r.etaSize > 0) RequireTableUsing(asked, asText, "eta-size", "", Is3D);
+  const SamplingRequest &s = r.sampling;
+  const std::pair<const char *, bool> sampling[] = {
+      {"estimator", s.estimator.has_value()}, {"samples", s.samples > 0},
+      {"replicates", s.replicates > 0},       {"tolerance", s.tolerance > 0.0},
+      {"sampling-only", s.samplingOnly},      {"max-samples", s.maxSamples.has_value()},
+      {"seed", s.seed.has_value()}};
+  for (const auto &[option, given] : sampling)
+    if (given) RequireTableUsing(asked, asText, option, "", IsSampled);
+}
+
+}  // namespace lutbake
