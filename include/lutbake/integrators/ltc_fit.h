@@ -1,0 +1,191 @@
+// Fitting linearly transformed cosines (models/ltc.h) to a cosine-weighted
+// lobe f(v, l) (n.l), by a deterministic quadrature.
+//
+// The quadrature (the "half-vector rule"). Every integral over light
+// directions l is taken over the half vector h = normalize(v + l) of the
+// reflection l = 2 (v.h) h - v, h at polar angle theta (T = tan theta) and
+// azimuth phi about the normal:
+//   int g(l) dl = int dphi int dT 4 (v.h) T / (1 + T^2)^(3/2) g(l(h)),
+// (dl = 4 (v.h) dw_h, dw_h = sin(theta) dtheta dphi). For a microfacet lobe of
+// width alpha the integrand is ~ D(h), so T is changed, as in the albedo
+// quadrature (albedo_quadrature.h), to t = T / alpha on the core T <= alpha
+// (two Gauss panels) and to w = alpha / T on the tail, whose panels shrink
+// geometrically (ratio 1/3) toward w_min = alpha / T_max(phi), the horizon:
+//   l.z >= 0  <=>  T <= T_max(phi) = (sc + sqrt(sc^2 + mu^2)) / mu,  sc = s cos(phi),
+// the positive root of l.z (1 + T^2) = -mu T^2 + 2 sc T + mu. The azimuth is
+// phi = pi/2 -+ a sinh(u), a = asinh(mu / s), panels of width <= 1.2 in u
+// (T_max has its complex singularity at cos(phi) = +-i mu / s), and the other
+// half circle by symmetry about the view plane (lobes and LTCs are even in l.y).
+//
+// Polygons. A spherical polygon P is the intersection of the half-spaces
+// n_e . l >= 0 of its edges. Along one azimuth, with h~ = (T cos, T sin, 1),
+//   (n_e . l) (1 + T^2) = 2 (v.h~)(n_e.h~) - (1 + T^2)(n_e . v),
+// a quadratic in T: its roots give the T-intervals inside P exactly, and the
+// panels above are cut at them. The azimuth panels are cut where the
+// intervals change their structure: at the azimuths of the half vectors of
+// P's vertices (those of P clipped at the horizon included), and where an
+// edge's quadratic has a double root (the meridian's curve touches the edge),
+// next to which the integrand goes like sqrt(phi - phi_c); each such panel's
+// variable is mapped by x -> 3x^2 - 2x^3, which makes that smooth.
+//
+// The fit. The lobe is approximated by magnitude D(l). With
+// m = int f (n.l) dl, the L1 error on the whole sphere is
+//   int |f (n.l) / m - D| dl = 2 - 2 int_{l.z > 0} min(f (n.l) / m, D) dl,
+// (|a - b| = a + b - 2 min(a, b), both densities integrate to 1 and f = 0
+// below the horizon), and on the upper hemisphere alone (the lobe error)
+//   e_lobe = int_{l.z>0} |f (n.l) / m - D| dl = 2 - leakage - 2 int_{l.z>0} min(f (n.l) / m, D) dl.
+// The minimum is at most f (n.l) / m, whose peak the rule resolves, so the
+// rule integrates it well wherever the LTC lies; leakage is exact
+// (LtcLeakage). The objective minimised is
+//   J = e_lobe + leakageWeight * leakage
+// (weight 1: the L1 error on the sphere), over the four entries of M^-1 in
+// the parameters (theta*, log A, log rho, beta):
+//   m00 = rho cos(theta*), m02 = -rho sin(theta*),
+//   m20 = A sin(theta*) + B cos(theta*), m22 = A cos(theta*) - B sin(theta*), B = beta rho,
+// theta* the axis of the LTC (M^-1 (sin theta*, 0, cos theta*) is along +z),
+// A ~ its width out of the view plane, A / rho within it, beta its skew; then
+// det M^-1 = rho A > 0 for every parameter. Nelder-Mead from the fitted
+// neighbour; at mu = 1 the lobe is axisymmetric and so is the fit (theta* = 0,
+// rho = 1, beta = 0: one parameter).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "lutbake/core/math.h"
+#include "lutbake/models/ltc.h"
+#include "lutbake/models/ndf.h"
+#include "lutbake/models/smith.h"
+
+namespace lutbake {
+
+// The lobe: f(v, l) (n.l) at mu_o = v.z for a direction l (unit, any
+// hemisphere: it returns 0 for l.z <= 0), with the width the half-vector rule
+// resolves (alpha of a microfacet lobe; 1 for a broad one) and, optionally,
+// its exact magnitude int f (n.l) dl and fresnel int f (n.l) (1 - v.h)^5 dl
+// (otherwise the rule integrates them).
+struct LtcLobe {
+  std::function<double(double mu_o, const Vec3 &l)> cosineWeighted;
+  double quadratureAlpha = 1.0;
+  std::function<void(double mu_o, double *magnitude, double *fresnel)> moments;
+};
+
+// The microfacet lobe f = D G2 / (4 mu_o mu_i) (F = 1) times mu_i, of the
+// given NDF and Smith G2; moments from the albedo quadrature (E = A + B and
+// B at tolerance 1e-10). At alpha = 0 the lobe is a mirror: its moments are
+// E = 1, B = (1 - mu)^5 exactly, and the LTC is fitted at kLtcMinimumAlpha.
+LtcLobe MicrofacetLtcLobe(const Ndf &ndf, SmithForm smith);
+inline constexpr double kLtcMinimumAlpha = 1e-5;  // ltc_code's MIN_ALPHA
+
+// One node of the half-vector rule: int g(l) dl ~= sum weight * g(l).
+struct LtcNode {
+  Vec3 l, h;
+  double weight;
+};
+
+// Rule density: level 0 (the fit), level 1 (errors; about 2.3x the nodes),
+// level 2 (the check of level 1; about 2.3x again).
+// Nodes of the upper hemisphere; with halfCircle the azimuths phi in [0, pi]
+// only, weights doubled (for integrands even in l.y).
+std::vector<LtcNode> HalfVectorRule(double mu_o, double quadratureAlpha, int level,
+                                    bool halfCircle);
+
+// Nodes covering P (count vertices, from the origin, 3 <= count <= 8) clipped
+// at the horizon, on the whole circle of azimuths.
+std::vector<LtcNode> HalfVectorPolygonRule(double mu_o, double quadratureAlpha, int level,
+                                           const Vec3 *vertices, int count);
+
+// int f (n.l) dl and int f (n.l) (1 - v.h)^5 dl by the rule.
+void IntegrateLobeMoments(const LtcLobe &lobe, double mu_o, int level, double *magnitude,
+                          double *fresnel);
+
+// A light: a planar rectangle facing the origin; vertices in winding order.
+struct LtcRectangle {
+  Vec3 vertices[4];
+};
+// The fixed set of the polygon error: 12 rectangles of half-angles 10 to 60
+// degrees, centres from the normal to 88 degrees, around the mirror azimuth
+// and elsewhere, rolled; 5 of them cross the horizon. Listed in ltc_fit.cpp.
+const std::vector<LtcRectangle> &LtcTestRectangles();
+
+// The reference irradiances of the rectangles: int_{P, l.z >= 0} f (n.l) dl.
+std::vector<double> RectangleLobeIntegrals(const LtcLobe &lobe, double mu_o, int level);
+
+// Rectangles that receive less than this share of the lobe are left out of
+// the polygon error (their relative error measures the far tail only).
+inline constexpr double kLtcPolygonMinimumShare = 0.02;
+
+struct LtcErrors {
+  double lobe = 0;     // int_{l.z>0} |f (n.l) - m D| dl / m
+  double polygon = 0;  // max over rectangles |m int_P D - int_P f (n.l)| / int_P f (n.l)
+  double leakage = 0;  // int_{l.z<0} D dl
+};
+
+// The lobe error by the level-1 rule (formula above), the polygon error
+// against `references` (RectangleLobeIntegrals; empty: polygon = 0), leakage.
+LtcErrors MeasureLtcErrors(const LtcLobe &lobe, double mu_o, double magnitude,
+                           const LtcMatrix &minv, const std::vector<double> &references);
+// The same for an LTC whose own magnitude ltcMagnitude scales D (a table
+// fitted elsewhere, its magnitude not the lobe's): the errors are of
+// ltcMagnitude D against f (n.l), divided by the lobe's magnitude (lobe) or
+// the reference (polygon).
+LtcErrors MeasureLtcErrors(const LtcLobe &lobe, double mu_o, double magnitude, double ltcMagnitude,
+                           const LtcMatrix &minv, const std::vector<double> &references);
+
+// The lobe error of ltcMagnitude D against f (n.l), divided by magnitude, by
+// the rule at `level` (formula above, with D scaled by c = ltcMagnitude /
+// magnitude: Q[f] / m + c (1 - leakage) - 2 Q[min(f (n.l) / m, c D)]).
+double LtcLobeError(const LtcLobe &lobe, double mu_o, double magnitude, double ltcMagnitude,
+                    const LtcMatrix &minv, int level);
+
+struct LtcFitSettings {
+  double leakageWeight = 1.0;  // J = e_lobe + leakageWeight * leakage
+  int maxEvaluations = 600;    // Nelder-Mead budget per texel
+};
+
+struct LtcTexel {
+  LtcMatrix minv;
+  double magnitude = 0, fresnel = 0;
+  double objective = 0;  // J at the fit, by the level-0 rule
+  int evaluations = 0;
+};
+
+// Fits one texel from `start`. mu_o == 1 fits the axisymmetric family.
+LtcTexel FitLtcTexel(const LtcLobe &lobe, double mu_o, const LtcMatrix &start,
+                     const LtcFitSettings &settings);
+
+// The 64 x 64 layout of ltc_code and three.js. Texel (i, j), stored at
+// i * size + j (row i, column j; three.js's DataTexture row i is its v):
+//   r_j  = j / (size - 1)               (u = r: perceptual roughness)
+//   mu_i = 1 - (i / (size - 1))^2        (v = sqrt(1 - mu))
+// at texel centres: three.js samples uv * (size - 1) / size + 0.5 / size.
+// alpha = r^2 (fitted at max(alpha, kLtcMinimumAlpha)). ltc_code computes
+// theta = min(1.57, acos(mu_i)), so its last row is fitted at
+// mu = cos(1.57) = 7.96e-4; here it is mu = 0 exactly (the grazing limit).
+double LtcTableMu(int i, int size);
+double LtcTableRoughness(int j, int size);
+
+struct LtcTable {
+  int size = 0;
+  // size * size each, texel (i, j) at i * size + j.
+  std::vector<double> m00, m20, m02, m22, magnitude, fresnel;
+  std::vector<double> lobeError, polygonError, leakage;  // empty unless errors were asked
+  int64_t evaluations = 0;                               // objective evaluations
+  LtcMatrix Matrix(int texel) const { return {m00[texel], m20[texel], m02[texel], m22[texel]}; }
+};
+
+// The order that keeps neighbours on one branch and the result independent of
+// the thread count: the row r = 1 sequentially from mu = 1 (axisymmetric,
+// started at the cosine M^-1 = I) to mu = 0, then every column of mu in
+// parallel, each sequentially from r = 1 down to r = 0, every texel started
+// from the one before it.
+// lobeAt(r) gives the lobe at perceptual roughness r.
+LtcTable FitLtcTable(const std::function<LtcLobe(double perceptualRoughness)> &lobeAt, int size,
+                     const LtcFitSettings &settings, bool errors);
+
+// The GGX table of issue 28 (F = 1).
+LtcTable FitGgxLtcTable(NdfKind ndf, SmithForm smith, int size, const LtcFitSettings &settings,
+                        bool errors);
+
+}  // namespace lutbake
