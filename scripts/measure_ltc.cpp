@@ -3,7 +3,11 @@
 // the same errors: lobe error, worst polygon (rectangle) error, leakage.
 //
 //   lutbake_measure_ltc [--threads N] [--leakage-weight W] [--no-errors]
+//                       [--sheen charlie|ashikhmin [--alpha-r]]
 //                       [RectAreaLightTexturesLib.js]
+//
+// --sheen fits the sheen lobe instead (alpha = r^2, or r with --alpha-r); it
+// has no published table to compare with.
 //
 // The .js file is three.js's examples/jsm/lights/RectAreaLightTexturesLib.js
 // (npm pack three); its LTC_MAT_1 / LTC_MAT_2 are ltc_code's
@@ -27,6 +31,7 @@
 
 #include "lutbake/integrators/albedo_quadrature.h"
 #include "lutbake/integrators/ltc_fit.h"
+#include "lutbake/models/sheen.h"
 
 using namespace lutbake;
 
@@ -104,11 +109,21 @@ int main(int argc, char **argv) {
   bool errors = true;
   LtcFitSettings settings;
   std::string jsPath;
+  bool sheen = false, alphaIsR = false;
+  SheenVisibility visibility = SheenVisibility::kCharlie;
   for (int k = 1; k < argc; ++k) {
     if (!std::strcmp(argv[k], "--threads") && k + 1 < argc) {
       threads = std::atoi(argv[++k]);
     } else if (!std::strcmp(argv[k], "--leakage-weight") && k + 1 < argc) {
       settings.leakageWeight = std::atof(argv[++k]);
+    } else if (!std::strcmp(argv[k], "--sheen") && k + 1 < argc) {
+      sheen = true;
+      if (!ParseSheenVisibility(argv[++k], &visibility)) {
+        std::fprintf(stderr, "--sheen %s: charlie or ashikhmin\n", argv[k]);
+        return 1;
+      }
+    } else if (!std::strcmp(argv[k], "--alpha-r")) {
+      alphaIsR = true;
     } else if (!std::strcmp(argv[k], "--no-errors")) {
       errors = false;
     } else {
@@ -122,11 +137,17 @@ int main(int argc, char **argv) {
   const int size = 64;
   const auto t0 = std::chrono::steady_clock::now();
   const LtcTable table =
-      FitGgxLtcTable(NdfKind::kGgx, SmithForm::kCorrelated, size, settings, false);
+      sheen ? FitSheenLtcTable(visibility, !alphaIsR, size, settings, false)
+            : FitGgxLtcTable(NdfKind::kGgx, SmithForm::kCorrelated, size, settings, false);
   const double fitSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("fit 64x64 ltc_ggx (leakage weight %g): %.2f s, %lld objective evaluations\n",
+  std::printf("fit 64x64 %s (leakage weight %g): %.2f s, %lld objective evaluations\n",
+              sheen ? (alphaIsR ? "ltc_sheen, alpha = r" : "ltc_sheen, alpha = r^2") : "ltc_ggx",
               settings.leakageWeight, fitSeconds, static_cast<long long>(table.evaluations));
+  auto lobeAt = [&](double r) {
+    return sheen ? SheenLtcLobe(visibility, alphaIsR ? r : r * r)
+                 : MicrofacetLtcLobe(Ndf{NdfKind::kGgx, r * r}, SmithForm::kCorrelated);
+  };
   double minDet = 1e300, maxMagnitudeError = 0, maxFresnelError = 0;
   bool finite = true;
   for (int k = 0; k < size * size; ++k) {
@@ -136,7 +157,7 @@ int main(int argc, char **argv) {
       finite = finite && std::isfinite(v);
   }
   // magnitude and fresnel against the albedo quadrature at tolerance 1e-12.
-  for (int i = 0; i < size; ++i)
+  for (int i = 0; i < size && !sheen; ++i)
     for (int j = 1; j < size; ++j) {
       const double r = LtcTableRoughness(j, size);
       const SplitSumQuadrature q = IntegrateSplitSumQuadrature(
@@ -145,13 +166,15 @@ int main(int argc, char **argv) {
       maxMagnitudeError = std::max(maxMagnitudeError, std::fabs(table.magnitude[k] - q.A - q.B));
       maxFresnelError = std::max(maxFresnelError, std::fabs(table.fresnel[k] - q.B));
     }
-  std::printf(
-      "min det M^-1 %.3g, all finite %s, |magnitude - E| max %.2g, |fresnel - B| max %.2g\n",
-      minDet, finite ? "yes" : "NO", maxMagnitudeError, maxFresnelError);
+  std::printf("min det M^-1 %.3g, all finite %s", minDet, finite ? "yes" : "NO");
+  if (!sheen)
+    std::printf(", |magnitude - E| max %.2g, |fresnel - B| max %.2g", maxMagnitudeError,
+                maxFresnelError);
+  std::printf("\n");
   if (!errors) return 0;
 
   std::vector<float> mat1, mat2;
-  if (!jsPath.empty()) {
+  if (!jsPath.empty() && !sheen) {
     std::ifstream in(jsPath);
     std::stringstream buffer;
     buffer << in.rdbuf();
@@ -167,8 +190,8 @@ int main(int argc, char **argv) {
   const auto t1 = std::chrono::steady_clock::now();
   tbb::parallel_for(size_t{0}, count, [&](size_t k) {
     const int i = static_cast<int>(k / size), j = static_cast<int>(k % size);
-    const double mu = LtcTableMu(i, size), r = LtcTableRoughness(j, size);
-    const LtcLobe lobe = MicrofacetLtcLobe(Ndf{NdfKind::kGgx, r * r}, SmithForm::kCorrelated);
+    const double mu = table.mu[i], r = table.roughness[j];
+    const LtcLobe lobe = lobeAt(r);
     const std::vector<double> refs = RectangleLobeIntegrals(lobe, mu, 1);
     ours[k] = MeasureLtcErrors(lobe, mu, table.magnitude[k], table.Matrix(k), refs);
     if (!mat1.empty()) {

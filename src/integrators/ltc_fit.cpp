@@ -9,6 +9,7 @@
 
 #include "lutbake/integrators/albedo_quadrature.h"
 #include "lutbake/integrators/gauss_legendre.h"
+#include "lutbake/integrators/sheen_quadrature.h"
 
 namespace lutbake {
 
@@ -351,6 +352,32 @@ LtcLobe MicrofacetLtcLobe(const Ndf &ndf, SmithForm smith) {
   return lobe;
 }
 
+LtcLobe SheenLtcLobe(SheenVisibility visibility, double alpha) {
+  LtcLobe lobe;
+  // alpha = 0 has no lobe (E = 0): the shape of the narrowest one fitted
+  // stands in for it, with magnitude 0.
+  const double shape = alpha > 0.0 ? alpha : kLtcMinimumSheenAlpha;
+  lobe.quadratureAlpha = std::max(alpha, kLtcMinimumSheenAlpha);
+  lobe.cosineWeighted = [visibility, shape](double mu_o, const Vec3 &l) {
+    if (l.z <= 0.0) return 0.0;
+    const Vec3 o = ViewDirection(mu_o);
+    const Vec3 sum{o.x + l.x, o.y + l.y, o.z + l.z};
+    if (Dot(sum, sum) == 0.0) return 0.0;
+    const Vec3 h = Normalize(sum);
+    return CharlieDFromCos(shape, h.z) * SheenCosineVisibility(visibility, shape, mu_o, l.z);
+  };
+  lobe.moments = [visibility, alpha, lobe](double mu_o, double *magnitude, double *fresnel) {
+    *magnitude = IntegrateSheenAlbedo(visibility, alpha, mu_o, 1e-10).value;
+    if (alpha == 0.0) {
+      *fresnel = 0.0;
+      return;
+    }
+    double ruleMagnitude = 0.0;
+    IntegrateLobeMoments(lobe, mu_o, 2, &ruleMagnitude, fresnel);
+  };
+  return lobe;
+}
+
 const std::vector<LtcRectangle> &LtcTestRectangles() {
   // {polar angle of the centre, its azimuth (0: the view's side, 180: the
   //  mirror direction's), half-width, half-height, roll}, degrees.
@@ -441,6 +468,9 @@ double LtcLobeError(const LtcLobe &lobe, double mu_o, double magnitude, double l
 LtcErrors MeasureLtcErrors(const LtcLobe &lobe, double mu_o, double magnitude, double ltcMagnitude,
                            const LtcMatrix &minv, const std::vector<double> &references) {
   LtcErrors e;
+  e.leakage = LtcLeakage(minv);
+  // No lobe (magnitude 0): magnitude D = 0 = f (n.l) is exact.
+  if (!(magnitude > 0.0)) return e;
   e.lobe = LtcLobeError(lobe, mu_o, magnitude, ltcMagnitude, minv, 1);
   e.leakage = LtcLeakage(minv);
   const std::vector<LtcRectangle> &rects = LtcTestRectangles();
@@ -574,6 +604,12 @@ LtcTexel FitLtcTexel(const LtcLobe &lobe, double mu_o, const LtcMatrix &start,
   std::vector<double> values;
   double total = 0.0;
   for (const LtcNode &n : nodes) total += n.weight * lobe.cosineWeighted(mu_o, n.l);
+  // A lobe that vanishes (sheen at alpha = 0, or below double's range) has
+  // nothing to fit: the start stands.
+  if (!(total > 0.0) || !std::isfinite(total)) {
+    out.minv = start;
+    return out;
+  }
   for (const LtcNode &n : nodes) {
     const double v = lobe.cosineWeighted(mu_o, n.l) / total;
     // Nodes that hold less than 1e-12 of the lobe can change min(f / m, D)
@@ -633,10 +669,12 @@ double LtcTableMu(int i, int size) {
 double LtcTableRoughness(int j, int size) { return static_cast<double>(j) / (size - 1); }
 
 LtcTable FitLtcTable(const std::function<LtcLobe(double perceptualRoughness)> &lobeAt, int size,
-                     const LtcFitSettings &settings, bool errors) {
+                     const LtcFitSettings &settings, bool errors, double muFloor) {
   assert(size >= 2);
   LtcTable t;
   t.size = size;
+  for (int i = 0; i < size; ++i) t.mu.push_back(std::max(LtcTableMu(i, size), muFloor));
+  for (int j = 0; j < size; ++j) t.roughness.push_back(LtcTableRoughness(j, size));
   const size_t count = static_cast<size_t>(size) * size;
   for (auto *v : {&t.m00, &t.m20, &t.m02, &t.m22, &t.magnitude, &t.fresnel}) v->assign(count, 0.0);
   if (errors)
@@ -655,7 +693,7 @@ LtcTable FitLtcTable(const std::function<LtcLobe(double perceptualRoughness)> &l
     t.fresnel[k] = x.fresnel;
     evaluations[k] = x.evaluations;
     if (errors) {
-      const double mu = LtcTableMu(i, size);
+      const double mu = t.mu[i];
       const LtcErrors e = MeasureLtcErrors(lobes[j], mu, x.magnitude, x.minv,
                                            RectangleLobeIntegrals(lobes[j], mu, 1));
       t.lobeError[k] = e.lobe;
@@ -667,12 +705,12 @@ LtcTable FitLtcTable(const std::function<LtcLobe(double perceptualRoughness)> &l
   std::vector<LtcTexel> first(size);
   LtcMatrix start;
   for (int i = 0; i < size; ++i) {
-    first[i] = FitLtcTexel(lobes[size - 1], LtcTableMu(i, size), start, settings);
+    first[i] = FitLtcTexel(lobes[size - 1], t.mu[i], start, settings);
     start = first[i].minv;
   }
   // Each mu in parallel, r from 1 down to 0.
   tbb::parallel_for(0, size, [&](int i) {
-    const double mu = LtcTableMu(i, size);
+    const double mu = t.mu[i];
     store(i, size - 1, first[i]);
     LtcMatrix s = first[i].minv;
     for (int j = size - 2; j >= 0; --j) {
@@ -683,6 +721,15 @@ LtcTable FitLtcTable(const std::function<LtcLobe(double perceptualRoughness)> &l
   });
   for (int e : evaluations) t.evaluations += e;
   return t;
+}
+
+LtcTable FitSheenLtcTable(SheenVisibility visibility, bool alphaIsRoughnessSquared, int size,
+                          const LtcFitSettings &settings, bool errors) {
+  return FitLtcTable(
+      [visibility, alphaIsRoughnessSquared](double r) {
+        return SheenLtcLobe(visibility, alphaIsRoughnessSquared ? r * r : r);
+      },
+      size, settings, errors, std::cos(1.57));
 }
 
 LtcTable FitGgxLtcTable(NdfKind ndf, SmithForm smith, int size, const LtcFitSettings &settings,

@@ -56,6 +56,7 @@
 #include "lutbake/core/math.h"
 #include "lutbake/models/ltc.h"
 #include "lutbake/models/ndf.h"
+#include "lutbake/models/sheen.h"
 #include "lutbake/models/smith.h"
 
 namespace lutbake {
@@ -77,6 +78,16 @@ struct LtcLobe {
 // E = 1, B = (1 - mu)^5 exactly, and the LTC is fitted at kLtcMinimumAlpha.
 LtcLobe MicrofacetLtcLobe(const Ndf &ndf, SmithForm smith);
 inline constexpr double kLtcMinimumAlpha = 1e-5;  // ltc_code's MIN_ALPHA
+
+// The sheen lobe D_Charlie V (F = 1) times mu_i (models/sheen.h), of width
+// alpha in [0, 1]. The rule follows it with quadratureAlpha = max(alpha,
+// kLtcMinimumSheenAlpha) (its mass lies on the tail's panels, graded toward
+// the horizon where it peaks). magnitude from IntegrateSheenAlbedo
+// (tolerance 1e-10), fresnel by the rule at level 2 (within 6e-9 of
+// IntegrateSheenSchlickWeightedAdaptive, which takes 30 ms a point). At
+// alpha = 0 there is no lobe: magnitude = fresnel = 0.
+LtcLobe SheenLtcLobe(SheenVisibility visibility, double alpha);
+inline constexpr double kLtcMinimumSheenAlpha = 1e-3;
 
 // One node of the half-vector rule: int g(l) dl ~= sum weight * g(l).
 struct LtcNode {
@@ -168,6 +179,7 @@ double LtcTableRoughness(int j, int size);
 
 struct LtcTable {
   int size = 0;
+  std::vector<double> mu, roughness;  // the axes: mu of row i, r of column j
   // size * size each, texel (i, j) at i * size + j.
   std::vector<double> m00, m20, m02, m22, magnitude, fresnel;
   std::vector<double> lobeError, polygonError, leakage;  // empty unless errors were asked
@@ -181,8 +193,16 @@ struct LtcTable {
 // parallel, each sequentially from r = 1 down to r = 0, every texel started
 // from the one before it.
 // lobeAt(r) gives the lobe at perceptual roughness r.
+// Row i is fitted at max(LtcTableMu(i, size), muFloor).
 LtcTable FitLtcTable(const std::function<LtcLobe(double perceptualRoughness)> &lobeAt, int size,
-                     const LtcFitSettings &settings, bool errors);
+                     const LtcFitSettings &settings, bool errors, double muFloor = 0.0);
+
+// The sheen table of issue 28 (F = 1), alpha = r^2 (alphaIsRoughnessSquared)
+// or alpha = r. With the Charlie visibility the albedo grows as 1 / mu at
+// grazing (its fitted Lambda stays finite at the horizon), so the last row is
+// fitted at mu = cos(1.57) = 7.96e-4, where ltc_code fits its own last row.
+LtcTable FitSheenLtcTable(SheenVisibility visibility, bool alphaIsRoughnessSquared, int size,
+                          const LtcFitSettings &settings, bool errors);
 
 // The GGX table of issue 28 (F = 1).
 LtcTable FitGgxLtcTable(NdfKind ndf, SmithForm smith, int size, const LtcFitSettings &settings,
