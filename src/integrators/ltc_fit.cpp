@@ -258,23 +258,31 @@ std::vector<LtcNode> HalfVectorPolygonRule(double mu_o, double quadratureAlpha, 
   // And the azimuths where an edge's quadratic has a double root (the
   // meridian's curve touches the edge's great circle): the zeros of its
   // discriminant, a trigonometric polynomial of degree 2 in phi, found by
-  // sign changes on 1440 azimuths and bisection.
+  // sign changes on 720 azimuths (a table of their cosines and sines, made
+  // once) and bisection.
+  constexpr int kSamples = 720;
+  static const std::vector<std::array<double, 2>> circle = [] {
+    std::vector<std::array<double, 2>> c(kSamples + 1);
+    for (int k = 0; k <= kSamples; ++k) {
+      const double phi = 2.0 * kPi * k / kSamples;
+      c[k] = {std::cos(phi), std::sin(phi)};
+    }
+    return c;
+  }();
   for (const Vec3 &n : normals) {
-    auto disc = [&](double phi) {
-      const Quadratic q = EdgeQuadratic(o, n, std::cos(phi), std::sin(phi));
+    auto disc = [&](double cosPhi, double sinPhi) {
+      const Quadratic q = EdgeQuadratic(o, n, cosPhi, sinPhi);
       return q.b * q.b - 4.0 * q.a * q.c;
     };
-    constexpr int kSamples = 1440;
-    double prev = disc(0.0);
+    double prev = disc(circle[0][0], circle[0][1]);
     for (int k = 1; k <= kSamples; ++k) {
-      double hi = 2.0 * kPi * k / kSamples;  // bisected below when the sign changes
-      const double cur = disc(hi);
+      const double cur = disc(circle[k][0], circle[k][1]);
       if ((prev < 0.0) != (cur < 0.0)) {
-        double lo = 2.0 * kPi * (k - 1) / kSamples;
+        double lo = 2.0 * kPi * (k - 1) / kSamples, hi = 2.0 * kPi * k / kSamples;
         const bool loNegative = prev < 0.0;
-        for (int it = 0; it < 60; ++it) {
+        for (int it = 0; it < 50; ++it) {
           const double mid = 0.5 * (lo + hi);
-          ((disc(mid) < 0.0) == loNegative ? lo : hi) = mid;
+          ((disc(std::cos(mid), std::sin(mid)) < 0.0) == loNegative ? lo : hi) = mid;
         }
         cuts.push_back(0.5 * (lo + hi));
       }
@@ -695,7 +703,7 @@ LtcTable FitLtcTable(const std::function<LtcLobe(double perceptualRoughness)> &l
     if (errors) {
       const double mu = t.mu[i];
       const LtcErrors e = MeasureLtcErrors(lobes[j], mu, x.magnitude, x.minv,
-                                           RectangleLobeIntegrals(lobes[j], mu, 1));
+                                           RectangleLobeIntegrals(lobes[j], mu, 0));
       t.lobeError[k] = e.lobe;
       t.polygonError[k] = e.polygon;
       t.leakage[k] = e.leakage;
