@@ -242,11 +242,12 @@ Params NelderMead(const Params &start, const Params &step, int n, int maxEvaluat
     }
     x = xs;
     fx = fs;
-    // Stop when the values agree to 1e-10 and the simplex is 1e-7 small.
+    // Stop when the values agree to 1e-9 and the simplex is 1e-5 small (in
+    // theta* and the logarithms: far below what changes the errors).
     double size = 0.0;
     for (int i = 1; i <= n; ++i)
       for (int k = 0; k < n; ++k) size = std::max(size, std::fabs(x[i][k] - x[0][k]));
-    if (fx[n] - fx[0] <= 1e-10 * (1.0 + std::fabs(fx[0])) && size < 1e-7) break;
+    if (fx[n] - fx[0] <= 1e-9 * (1.0 + std::fabs(fx[0])) && size < 1e-5) break;
     if (fx[n] - fx[0] <= 1e-13 && size < 1e-4) break;
     Params centroid = x[0];
     for (int k = 0; k < n; ++k) {
@@ -362,7 +363,7 @@ LtcTexel FitLtcTexel(const LtcLobe &lobe, double mu_o, const LtcMatrix &start,
   int evals2 = 0;
   Params halfStep = step;
   for (double &s : halfStep) s *= 0.5;
-  p = NelderMead(p, halfStep, n, settings.maxEvaluations, wrapped, &best2, &evals2);
+  p = NelderMead(p, halfStep, n, settings.maxEvaluations / 4, wrapped, &best2, &evals2);
   if (axisymmetric) p = {0.0, p[0], 0.0, 0.0};
   out.minv = FromParams(p);
   out.objective = best2;
@@ -410,7 +411,7 @@ LtcTable FitLtcTable(const std::function<LtcLobe(double perceptualRoughness)> &l
       t.leakage[k] = e.leakage;
     }
   };
-  // The row r = 1, sequentially in mu.
+  // The column r = 1, sequentially in mu.
   std::vector<LtcTexel> first(size);
   LtcMatrix start;
   for (int i = 0; i < size; ++i) {
