@@ -363,7 +363,7 @@ LtcTexel FitLtcTexel(const LtcLobe &lobe, double mu_o, const LtcMatrix &start,
   int evals2 = 0;
   Params halfStep = step;
   for (double &s : halfStep) s *= 0.5;
-  p = NelderMead(p, halfStep, n, settings.maxEvaluations / 4, wrapped, &best2, &evals2);
+  p = NelderMead(p, halfStep, n, settings.maxEvaluations, wrapped, &best2, &evals2);
   if (axisymmetric) p = {0.0, p[0], 0.0, 0.0};
   out.minv = FromParams(p);
   out.objective = best2;
