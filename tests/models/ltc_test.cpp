@@ -64,6 +64,27 @@ double IntegrateLune(double b0, double b1, G &&g) {
 // b in (beta - pi/2, beta + pi/2) with beta = atan2(m22, m20).
 double LtcAxisAngle(const LtcMatrix &m) { return std::atan2(m.m22, m.m20); }
 
+// The texel convention: three.js builds
+//   mat3 mInv = mat3(vec3(t1.x, 0, t1.y), vec3(0, 1, 0), vec3(t1.z, 0, t1.w));
+// from its LTC_1 texel t1, and GLSL's mat3 takes columns, so mInv * l =
+// l.x col0 + l.y col1 + l.z col2. With t1 = (m00, m20, m02, m22) that is
+// LtcMatrix::Apply (row-major M^-1 = [[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]).
+TEST(Ltc, ThreeJsTexelConvention) {
+  const double t1[4] = {0.9, -0.2, 0.35, 0.4};  // x, y, z, w
+  const Vec3 col0{t1[0], 0, t1[1]}, col1{0, 1, 0}, col2{t1[2], 0, t1[3]};
+  const LtcMatrix m{t1[0], t1[1], t1[2], t1[3]};
+  for (const Vec3 &l : {Vec3{0.3, -0.4, 0.7}, Vec3{-0.6, 0.1, 0.2}, Vec3{1, 0, 0}, Vec3{0, 0, 1}}) {
+    const Vec3 glsl =
+        Add(Add(Vec3{col0.x * l.x, col0.y * l.x, col0.z * l.x}, col1, l.y), col2, l.z);
+    const Vec3 ours = m.Apply(l);
+    EXPECT_EQ(glsl.x, ours.x);
+    EXPECT_EQ(glsl.y, ours.y);
+    EXPECT_EQ(glsl.z, ours.z);
+  }
+  // Its row 0, column 0 texel (mu = 1, r = 0) is (1, 0, 0, 2e-5): m00 = 1 =
+  // the middle element, m22 = 2e-5 ~ 2 alpha at ltc_code's MIN_ALPHA = 1e-5.
+}
+
 TEST(Ltc, IdentityIsTheClippedCosine) {
   const LtcMatrix identity;
   for (const Vec3 &l : {Vec3{0, 0, 1}, Vec3{0.6, 0, 0.8}, Vec3{0.48, 0.6, 0.64}, Vec3{0, 1, 0},
