@@ -49,6 +49,8 @@ int ClipPolygonToUpperHalfSpace(const Vec3 *vertices, int count, Vec3 *out) {
 }
 
 double ClippedCosinePolygonIntegral(const Vec3 *vertices, int count) {
+  // LtcPolygonIntegral passes up to count + 2 vertices (two clippings).
+  assert(count >= 3 && count <= kMaxPolygonVertices + 2);
   Vec3 v[kMaxPolygonVertices + 2];
   for (int i = 0; i < count; ++i) v[i] = Normalize(vertices[i]);
   double sum = 0.0;

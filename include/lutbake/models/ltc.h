@@ -63,7 +63,8 @@ double LtcPolygonIntegral(const LtcMatrix &minv, const Vec3 *vertices, int count
                           bool clipAtSurfaceHorizon = true);
 
 // The edge sum above for a polygon already on the upper side (its vertices
-// need not be normalised): the projected solid angle divided by pi.
+// need not be normalised; 3 to 10 of them): the projected solid angle
+// divided by pi.
 double ClippedCosinePolygonIntegral(const Vec3 *vertices, int count);
 
 // Sutherland-Hodgman clipping of a polygon (straight edges, any scale) to the
