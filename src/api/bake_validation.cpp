@@ -7,6 +7,7 @@
 #include "bake_internal.h"
 #include "lutbake/api/names.h"
 #include "lutbake/core/error.h"
+#include "lutbake/tables/bake.h"
 #include "lutbake/tables/table_definition.h"
 
 namespace lutbake {
@@ -35,7 +36,20 @@ bool HasModelOption(const TableDefinition &table, const std::string &option) {
   const std::vector<std::string> options = table.ModelOptions();
   return std::find(options.begin(), options.end(), option) != options.end();
 }
-bool Is3D(const TableDefinition &table, const std::string &) { return table.DefaultDepth() > 1; }
+// Whether --eta-size changes the table's texels (the 3D tables' z axis, the
+// averages' eta axis): its default axes at two eta sizes.
+bool HasEtaAxis(const TableDefinition &table, const std::string &) {
+  size_t texels[2];
+  for (int k = 0; k < 2; ++k) {
+    BakeSettings settings;
+    settings.size = 2;
+    settings.depthSize = 2 + k;
+    Axis x, y, z;
+    DefaultAxes(table, settings, &x, &y, &z);
+    texels[k] = static_cast<size_t>(x.count) * y.count * z.count;
+  }
+  return texels[0] != texels[1];
+}
 bool IsSampled(const TableDefinition &table, const std::string &) { return table.Sampled(); }
 
 void RequireFormat(const BakeRequest &r, const std::string &option, const std::string &format) {
@@ -100,7 +114,7 @@ void ValidateApplicability(const BakeRequest &r) {
       {"sheen-alpha", r.sheenAlpha.has_value()}};
   for (const auto &[option, given] : models)
     if (given) RequireTableUsing(asked, asText, option, option, HasModelOption);
-  if (r.etaSize > 0) RequireTableUsing(asked, asText, "eta-size", "", Is3D);
+  if (r.etaSize > 0) RequireTableUsing(asked, asText, "eta-size", "", HasEtaAxis);
   const SamplingRequest &s = r.sampling;
   const std::pair<const char *, bool> sampling[] = {
       {"estimator", s.estimator.has_value()}, {"samples", s.samples > 0},
