@@ -14,12 +14,6 @@
 
 namespace lutbake::cli {
 
-namespace {
-
-constexpr int kMaxSize = 4096;  // texels per axis (the library refuses larger 3D tables too)
-
-}  // namespace
-
 NdfKind ParseNdf(const std::string &s) {
   return s == "beckmann" ? NdfKind::kBeckmann : NdfKind::kGgx;
 }
@@ -33,36 +27,13 @@ FresnelModel ParseFresnel(const std::string &s) {
   return FresnelModel::kSchlick;
 }
 
-void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
-  app.add_option("--out", o.outDir, "Output directory (created if missing)")
-      ->required()
-      ->type_name("DIR");
-  app.add_option("--tables", o.tables,
-                 "Tables to bake (with --scene: which of the planned tables; one the plan "
-                 "leaves out is an error)")
-      ->capture_default_str()
-      ->check(ListOf(TableNames()));
-  AddModelOptions(app, o.ndf, o.smith);
-  AddSheenOptions(app, o.sheenVisibility, o.sheenAlpha);
-  app.add_option("--fresnel", o.fresnel,
-                 "Fresnel model of the Favg table: schlick (axis F0 in [0,1]), dielectric (exact, "
-                 "axis eta in [1,3]), conductor (exact, axes eta in [0,4] x k in [0,10]), f82 (F82 "
-                 "tint, closed form, axes F0 in [0,1] x tint in [0,1])")
-      ->capture_default_str()
-      ->check(OneOf({"schlick", "dielectric", "conductor", "f82"}));
-  app.add_option("--size", o.size,
-                 "Texels per axis for every table (default: 32 for E, Eavg, Favg; 128 for dfg)")
-      ->type_name("N")
-      ->check(InRange(1, kMaxSize, "texels per axis"));
-  app.add_option("--eta-size", o.etaSize,
-                 "Texels of the eta axis of the 3D tables (their own default otherwise)")
-      ->type_name("N")
-      ->check(InRange(1, kMaxSize, "texels of the eta axis"));
-  AddSamplingOptions(app, o.sampling, "texel");
-  app.add_flag("--error-map", o.errorMap,
-               "Also write T.err.exr: the per-texel bound of T.exr's float32 values (their "
-               "rounding included), same layout and channels as T");
-  AddThreadsOption(app, o.threads, "; output does not depend on it");
+namespace {
+
+constexpr int kMaxSize = 4096;  // texels per axis (the library refuses larger 3D tables too)
+
+// --format, --shader, --namespace, --header-type, --bin-type: what is
+// written per table, and how.
+void AddFileOptions(CLI::App &app, BakeOptions &o) {
   app.add_option("--format", o.formats,
                  "Files to write per table: exr (T.exr), bin (T.bin), header (T.h), png8 / png16 "
                  "(T.png, 8 or 16 bits rounded to nearest: adds at most half a step, 1/510 or "
@@ -97,6 +68,41 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
                  "--tolerance under 1e-7)")
       ->capture_default_str()
       ->check(OneOf({"float", "double"}));
+}
+
+}  // namespace
+
+void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
+  app.add_option("--out", o.outDir, "Output directory (created if missing)")
+      ->required()
+      ->type_name("DIR");
+  app.add_option("--tables", o.tables,
+                 "Tables to bake (with --scene: which of the planned tables; one the plan "
+                 "leaves out is an error)")
+      ->capture_default_str()
+      ->check(ListOf(TableNames()));
+  AddModelOptions(app, o.ndf, o.smith);
+  AddSheenOptions(app, o.sheenVisibility, o.sheenAlpha);
+  app.add_option("--fresnel", o.fresnel,
+                 "Fresnel model of the Favg table: schlick (axis F0 in [0,1]), dielectric (exact, "
+                 "axis eta in [1,3]), conductor (exact, axes eta in [0,4] x k in [0,10]), f82 (F82 "
+                 "tint, closed form, axes F0 in [0,1] x tint in [0,1])")
+      ->capture_default_str()
+      ->check(OneOf({"schlick", "dielectric", "conductor", "f82"}));
+  app.add_option("--size", o.size,
+                 "Texels per axis for every table (default: 32 for E, Eavg, Favg; 128 for dfg)")
+      ->type_name("N")
+      ->check(InRange(1, kMaxSize, "texels per axis"));
+  app.add_option("--eta-size", o.etaSize,
+                 "Texels of the eta axis of the 3D tables (their own default otherwise)")
+      ->type_name("N")
+      ->check(InRange(1, kMaxSize, "texels of the eta axis"));
+  AddSamplingOptions(app, o.sampling, "texel");
+  app.add_flag("--error-map", o.errorMap,
+               "Also write T.err.exr: the per-texel bound of T.exr's float32 values (their "
+               "rounding included), same layout and channels as T");
+  AddThreadsOption(app, o.threads, "; output does not depend on it");
+  AddFileOptions(app, o);
   app.add_flag("--json", o.json, "Print the summary as one JSON object on stdout");
   AddSceneOptions(app, o.scene);
   app.add_flag("--skip-unsupported", o.skipUnsupported,

@@ -4,17 +4,13 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <cstdint>
-#include <string>
+
+#include "lutbake/api/check.h"
 
 namespace lutbake::cli {
 
 struct CheckCommandOptions {
-  std::string dir;
-  int points = 256;
-  int furnaceGrid = 257;
-  uint64_t seed = 0;
-  int threads = 0;
+  CheckRequest request;  // the options bind to its fields
   bool json = false;
 };
 

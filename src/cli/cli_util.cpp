@@ -25,7 +25,6 @@ std::vector<std::string> SplitList(const std::string &list) {
   return items;
 }
 
-
 CLI::Validator OneOf(std::vector<std::string> names) {
   const std::string accepted = JoinNames(names);
   return CLI::Validator(
@@ -97,14 +96,6 @@ CLI::Validator CppNamespace() {
       "C++ namespace");
 }
 
-int PrepareOutputOrComplain(const std::string &command, const std::string &dir, bool *created) {
-  bool usageError = false;
-  const std::string problem = PrepareOutputDirectory(dir, created, &usageError);
-  if (problem.empty()) return 0;
-  std::fprintf(stderr, "lutbake %s: --out %s: %s\n", command.c_str(), dir.c_str(), problem.c_str());
-  return usageError ? 2 : 1;
-}
-
 void AddModelOptions(CLI::App &app, std::string &ndf, std::string &smith) {
   app.add_option("--ndf", ndf, "Microfacet distribution")
       ->capture_default_str()
@@ -163,6 +154,5 @@ int ThreadCount(int requested) {
   return requested > 0 ? requested
                        : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
-
 
 }  // namespace lutbake::cli

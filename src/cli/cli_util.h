@@ -1,5 +1,6 @@
 // Helpers shared by the subcommands: list parsing, validators whose
-// messages name the value and what is accepted, and output-directory checks.
+// messages name the value and what is accepted, the shared options, and the
+// mapping of a library call's failure to the exit status.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -10,7 +11,6 @@
 #include <vector>
 
 #include "lutbake/api/names.h"
-#include "lutbake/formats/output_transaction.h"
 
 namespace lutbake::cli {
 
@@ -41,10 +41,6 @@ CLI::Validator InRange(T lo, T hi, const std::string &what) {
       },
       "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
 }
-
-// The same, printing "lutbake COMMAND: --out DIR: reason" on failure. Returns
-// 0 when the directory is ready, else the exit status (2 usage, 1 runtime).
-int PrepareOutputOrComplain(const std::string &command, const std::string &dir, bool *created);
 
 // --ndf (ggx, beckmann) and --smith (correlated, separable), shared by the
 // subcommands that integrate the microfacet BRDF.

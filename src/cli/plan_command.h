@@ -16,16 +16,10 @@ struct SceneOptions {
   std::vector<std::string> manifests;
   bool noIbl = false;
   bool noCompensation = false;
-  bool used() const { return !scenes.empty() || !manifests.empty(); }
 };
 
 // --scene, --manifest, --no-ibl, --no-compensation.
 void AddSceneOptions(CLI::App &app, SceneOptions &options);
-
-// Reads the scenes and manifests and makes the plan. Returns 0, or the exit
-// status after printing why ("lutbake COMMAND: FILE: /json/pointer: ...").
-int MakePlanOrComplain(const std::string &command, const SceneOptions &options,
-                       PlanOptions planOptions, BakePlan *plan);
 
 struct PlanCommandOptions {
   SceneOptions scene;

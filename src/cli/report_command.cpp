@@ -1,43 +1,15 @@
 #include "report_command.h"
 
-#include <tbb/global_control.h>
 #include <unistd.h>
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <thread>
 
 #include "bake_command.h"
 #include "cli_util.h"
 #include "interrupt.h"
-#include "lutbake/formats/atomic_output.h"
-#include "lutbake/formats/writer.h"
-#include "lutbake/validation/report.h"
-#include "sampling_options.h"
+#include "lutbake/api/report.h"
 
 namespace lutbake::cli {
-
-namespace {
-
-void WriteText(AtomicOutputSet &output, const std::string &path, const std::string &text) {
-  const std::string temporary = output.Add(path);
-  std::ofstream file(temporary, std::ios::binary);
-  file << text;
-  file.close();
-  if (!file) throw IoError("cannot write " + path);
-}
-
-// The tables that take the sampled estimators: the ones a report compares.
-std::vector<std::string> SampledTableNames() {
-  std::vector<std::string> names;
-  for (const TableDefinition *table : AllTables())
-    if (table->Sampled()) names.push_back(table->Name());
-  return names;
-}
-
-}  // namespace
 
 void SetupReportCommand(CLI::App &app, ReportOptions &o) {
   app.add_option("--out", o.outDir, "Output directory for report.csv, report.md, report.svg")
@@ -46,7 +18,7 @@ void SetupReportCommand(CLI::App &app, ReportOptions &o) {
   app.add_option("--tables", o.tables,
                  "Tables to measure (Favg has no sampled estimator: it is always quadrature)")
       ->capture_default_str()
-      ->check(ListOf(SampledTableNames()));
+      ->check(ListOf(ReportTableNames()));
   app.add_option("--estimators", o.estimators, "Estimators to compare")
       ->capture_default_str()
       ->check(ListOf(EstimatorNames()));
@@ -67,57 +39,37 @@ void SetupReportCommand(CLI::App &app, ReportOptions &o) {
 }
 
 int RunReport(const ReportOptions &o) {
-  ReportSettings settings;
-  settings.tables.clear();
-  for (const std::string &name : SplitList(o.tables)) settings.tables.push_back(&TableNamed(name));
-  settings.estimators.clear();
-  for (const std::string &name : SplitList(o.estimators))
-    settings.estimators.push_back(EstimatorNamed(name));
-  settings.ndf = ParseNdf(o.ndf);
-  settings.smith = ParseSmith(o.smith);
-  settings.size = o.size;
-  settings.budgetSeconds = o.budget;
-  settings.seed = o.seed;
-
-  bool created = false;
-  if (const int status = PrepareOutputOrComplain("report", o.outDir, &created)) return status;
-  RemoveStaleTemporaries(o.outDir);
-  const int threads = ThreadCount(o.threads);
-  tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
-                                  static_cast<size_t>(threads));
+  ReportRequest r;
+  r.outputDirectory = o.outDir;
+  r.tables = SplitList(o.tables);
+  r.estimators = SplitList(o.estimators);
+  r.ndf = ParseNdf(o.ndf);
+  r.smith = ParseSmith(o.smith);
+  r.size = o.size;
+  r.budgetSeconds = o.budget;
+  r.seed = o.seed;
+  r.threads = o.threads;
   // SIGINT and SIGTERM end the report as they end a bake: 130 / 143, one
   // line, nothing written and the directory removed if this run made it.
   const InterruptGuard interrupt;
-  settings.cancellation = &interrupt.token();
-  // A progress line, rewritten in place, only when stderr is a terminal.
-  ReportProgressFn progress;
-  if (::isatty(STDERR_FILENO))
-    progress = [](const std::string &line) { std::cerr << "\r\033[K" << line << std::flush; };
-  std::vector<ReportRow> rows;
-  namespace fs = std::filesystem;
-  try {
-    rows = RunReport(settings, progress);
-    if (progress) std::cerr << "\r\033[K";
-    AtomicOutputSet output;
-    WriteText(output, (fs::path(o.outDir) / "report.csv").string(), ReportCsv(rows));
-    WriteText(output, (fs::path(o.outDir) / "report.md").string(), ReportMarkdown(settings, rows));
-    WriteText(output, (fs::path(o.outDir) / "report.svg").string(), ReportSvg(settings, rows));
-    interrupt.token().ThrowIfCancelled();
-    output.Commit();
-  } catch (const Cancelled &c) {
-    if (progress) std::cerr << "\r\033[K";
-    RemoveCreatedDirectory(o.outDir, created);
-    std::cerr << "lutbake report: interrupted by " << SignalName(c.reason())
-              << "; nothing written to " << o.outDir << "\n";
-    return 128 + c.reason();
-  } catch (const IoError &e) {
-    std::cerr << "lutbake report: " << e.what() << "\n";
-    RemoveCreatedDirectory(o.outDir, created);
-    return 1;
-  }
-  std::cerr << "lutbake report: " << rows.size() << " runs; wrote report.csv, report.md, "
-            << "report.svg in " << o.outDir << "\n";
-  return 0;
+  r.cancellation = &interrupt.token();
+  // A progress line, rewritten in place, only when stderr is a terminal;
+  // cleared when the measuring ends, however it ends.
+  const bool tty = ::isatty(STDERR_FILENO) != 0;
+  if (tty)
+    r.progress = [](const std::string &line) { std::cerr << "\r\033[K" << line << std::flush; };
+  return RunLibraryCall("report", o.outDir, [&] {
+    size_t runs = 0;
+    try {
+      runs = Report(r).rows.size();
+    } catch (...) {
+      if (tty) std::cerr << "\r\033[K";
+      throw;
+    }
+    if (tty) std::cerr << "\r\033[K";
+    std::cerr << "lutbake report: " << runs << " runs; wrote report.csv, report.md, "
+              << "report.svg in " << o.outDir << "\n";
+  });
 }
 
 }  // namespace lutbake::cli

@@ -12,8 +12,6 @@ struct ReportOptions {
   std::string estimators = "uniform,cosine,ndf,vndf-random,vndf,adaptive,quadrature";
   std::string ndf = "ggx";
   std::string smith = "correlated";
-  std::string sheenVisibility = "charlie";
-  std::string sheenAlpha = "linear";
   int size = 32;
   double budget = 60;
   uint64_t seed = 0;

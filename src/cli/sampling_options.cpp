@@ -1,7 +1,5 @@
 #include "sampling_options.h"
 
-#include <iostream>
-
 #include "cli_util.h"
 
 namespace lutbake::cli {
@@ -9,12 +7,6 @@ namespace lutbake::cli {
 namespace {
 constexpr uint64_t kMaxSamples = uint64_t{1} << 30;
 }  // namespace
-
-Estimator EstimatorNamed(const std::string &name) {
-  Estimator e = Estimator::kVisibleNormal;
-  ParseEstimator(name, &e);
-  return e;
-}
 
 void AddSamplingOptions(CLI::App &app, SamplingOptions &o, const std::string &unit) {
   app.add_option("--estimator", o.estimator,
@@ -60,7 +52,8 @@ void AddSamplingOptions(CLI::App &app, SamplingOptions &o, const std::string &un
 
 SamplingRequest SamplingRequestOf(const SamplingOptions &o, CLI::App &app) {
   SamplingRequest r;
-  if (!o.estimator.empty()) r.estimator = EstimatorNamed(o.estimator);
+  Estimator estimator = Estimator::kVisibleNormal;
+  if (!o.estimator.empty() && ParseEstimator(o.estimator, &estimator)) r.estimator = estimator;
   r.samples = o.samples;
   r.replicates = o.replicates;
   r.tolerance = o.tolerance;
@@ -68,24 +61,6 @@ SamplingRequest SamplingRequestOf(const SamplingOptions &o, CLI::App &app) {
   if (app.count("--max-samples") > 0) r.maxSamples = o.maxSamples;
   if (app.count("--seed") > 0) r.seed = o.seed;
   return r;
-}
-
-int ApplySamplingOptions(const std::string &command, const SamplingOptions &o, BakeSettings *s) {
-  SamplingRequest r;
-  if (!o.estimator.empty()) r.estimator = EstimatorNamed(o.estimator);
-  r.samples = o.samples;
-  r.replicates = o.replicates;
-  r.tolerance = o.tolerance;
-  r.samplingOnly = o.samplingOnly;
-  if (o.maxSamples != kDefaultMaxSamples) r.maxSamples = o.maxSamples;
-  r.seed = o.seed;
-  try {
-    ApplySampling(r, s);
-  } catch (const UsageError &e) {
-    std::cerr << "lutbake " << command << ": " << e.what() << "\n";
-    return 2;
-  }
-  return 0;
 }
 
 }  // namespace lutbake::cli

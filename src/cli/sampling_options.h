@@ -22,22 +22,11 @@ struct SamplingOptions {
   uint64_t maxSamples = kDefaultMaxSamples;
 };
 
-// The estimator of a (validated) name.
-Estimator EstimatorNamed(const std::string &name);
-
 // `unit` names what gets the samples in the help texts: "texel" or "point".
 void AddSamplingOptions(CLI::App &app, SamplingOptions &options, const std::string &unit);
 
 // The request the options describe (lutbake::ApplySampling reads it); `app`
 // tells which options were given.
 SamplingRequest SamplingRequestOf(const SamplingOptions &options, CLI::App &app);
-
-// Copies the options into `settings`. Without --estimator the estimator is
-// the quadrature (to --tolerance, or float32-exact), unless --samples,
-// --replicates or --sampling-only ask for sampling: then visible-normal
-// sampling. Returns 0, or 2 after printing "lutbake COMMAND: ..." for a
-// combination that makes no sense.
-int ApplySamplingOptions(const std::string &command, const SamplingOptions &options,
-                         BakeSettings *settings);
 
 }  // namespace lutbake::cli

@@ -261,30 +261,24 @@ FurnaceImage RenderFurnaceSpheres(const FurnaceResult &r) {
   return image;
 }
 
-void WriteFurnaceFiles(const std::string &dir, const FurnaceSettings &s, const FurnaceResult &r) {
-  AtomicOutputSet files;
-  const auto text = [&](const std::string &name, const std::string &content) {
-    const std::string path = files.Add(dir + "/" + name);
-    std::ofstream out(path, std::ios::binary);
-    out << content;
-    out.close();
-    if (!out) throw IoError("cannot write " + path);
-  };
-  text("furnace.csv", FurnaceCsv(s, r));
-  text("furnace.json", FurnaceJson(s, r));
-  if (!r.fine.empty()) {
-    text("furnace_plot.svg", FurnacePlotSvg(s, r));
-    int w = 0, h = 0;
-    const std::vector<uint8_t> plot = RasterPlot(r, &w, &h);
-    WritePng(files.Add(dir + "/furnace_plot.png"), w, h, 3, plot);
-    const FurnaceImage spheres = RenderFurnaceSpheres(r);
-    WriteExrImage(files.Add(dir + "/furnace_spheres.exr"), spheres.width, spheres.height, {"Y"},
-                  spheres.values);
-    std::vector<uint8_t> grey(spheres.values.size());
-    for (size_t i = 0; i < grey.size(); ++i) grey[i] = ToByte(0.5 * spheres.values[i]);
-    WritePng(files.Add(dir + "/furnace_spheres.png"), spheres.width, spheres.height, 1, grey);
-  }
-  files.Commit();
+void WriteFurnaceFiles(OutputTransaction &output, const FurnaceSettings &s,
+                       const FurnaceResult &r) {
+  output.WriteText("furnace.csv", FurnaceCsv(s, r));
+  output.WriteText("furnace.json", FurnaceJson(s, r));
+  if (r.fine.empty()) return;
+  output.WriteText("furnace_plot.svg", FurnacePlotSvg(s, r));
+  int w = 0, h = 0;
+  const std::vector<uint8_t> plot = RasterPlot(r, &w, &h);
+  output.Write("furnace_plot.png", [&](const std::string &path) { WritePng(path, w, h, 3, plot); });
+  const FurnaceImage spheres = RenderFurnaceSpheres(r);
+  output.Write("furnace_spheres.exr", [&](const std::string &path) {
+    WriteExrImage(path, spheres.width, spheres.height, {"Y"}, spheres.values);
+  });
+  std::vector<uint8_t> grey(spheres.values.size());
+  for (size_t i = 0; i < grey.size(); ++i) grey[i] = ToByte(0.5 * spheres.values[i]);
+  output.Write("furnace_spheres.png", [&](const std::string &path) {
+    WritePng(path, spheres.width, spheres.height, 1, grey);
+  });
 }
 
 }  // namespace lutbake

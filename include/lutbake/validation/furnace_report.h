@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "lutbake/formats/output_transaction.h"
 #include "lutbake/integrators/furnace.h"
 
 namespace lutbake {
@@ -72,8 +73,10 @@ FurnaceImage RenderFurnaceSpheres(const FurnaceResult &result);
 // The albedo at mu from a fine row (linear interpolation, as the picture does).
 double InterpolateFine(const std::vector<double> &fine, double mu);
 
-// Writes the six files into dir (which must exist) all or nothing.
-void WriteFurnaceFiles(const std::string &dir, const FurnaceSettings &settings,
+// Writes the files through `output` (furnace.csv and furnace.json; with
+// the pictures' grid also furnace_plot.svg/.png and furnace_spheres.exr/.png);
+// the caller commits.
+void WriteFurnaceFiles(OutputTransaction &output, const FurnaceSettings &settings,
                        const FurnaceResult &result);
 
 }  // namespace lutbake

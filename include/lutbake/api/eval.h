@@ -1,0 +1,78 @@
+// lutbake::Evaluate: any table at any points (not only texel centres), with
+// the error bound of each value, as `lutbake eval` prints them.
+//
+//   lutbake::EvalRequest request;
+//   request.table = "E";
+//   request.coordinates = {{"mu", {1e-7, 0.5}}, {"roughness", {0.3}}};
+//   for (const lutbake::EvalPoint &p : lutbake::Evaluate(request).points)
+//     std::cout << p.values[0] << " +- " << p.errors[0] << "\n";
+//
+// The points are every combination of the coordinates' values, row-major
+// as a table stores them (the first coordinate inner). Throws UsageError
+// (its message names the option as the command line spells it) for a
+// model option or coordinate the table does not take, a value outside the
+// table's range, a required coordinate left out, more than a million
+// points, an estimator the table has not, or a point the table cannot
+// evaluate.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lutbake/api/sampling.h"
+#include "lutbake/tables/table_definition.h"
+
+namespace lutbake {
+
+// More points than this in one request is a typo, not a request (each
+// costs about a millisecond with the default quadrature).
+inline constexpr size_t kMaxEvalPoints = 1000000;
+
+struct EvalRequest {
+  std::string table;  // TableNames()
+  // The coordinates by option name ("mu", "roughness", "sigma", "f0", "eta",
+  // "k", "tint"): which a table takes depends on it and its model
+  // (TableDefinition::Coordinates); an empty list is one not given.
+  std::map<std::string, std::vector<double>> coordinates;
+  // How the caller spelled each value ("1e-7"), for the messages; a value
+  // without one is quoted as the shortest decimal that reads back.
+  std::map<std::string, std::vector<std::string>> spelling;
+  // Models; each must be one the table has (TableDefinition::ModelOptions).
+  // Unset: GGX, height-correlated Smith, Schlick, Charlie, alpha = r.
+  std::optional<NdfKind> ndf;
+  std::optional<SmithForm> smith;
+  std::optional<FresnelModel> fresnel;
+  std::optional<SheenVisibility> sheenVisibility;
+  std::optional<SheenAlpha> sheenAlpha;
+  // Unset: the quadrature. Sampled: the value at a texel centre is the
+  // texel's of a bake with the same settings and seed.
+  SamplingRequest sampling;
+  int threads = 0;  // 0: all cores; the values do not depend on it
+};
+
+struct EvalPoint {
+  std::vector<double> coordinates;     // in EvalResult::coordinateNames' order
+  std::vector<double> values, errors;  // per channel
+  // "exact" (the closed form of the mirror), "quadrature" (also where a
+  // tolerance run switched to it), else the sampled estimator's name.
+  std::string estimator;
+  uint64_t samples = 0;
+};
+
+struct EvalResult {
+  std::string table;
+  Metadata labels;                           // the variant: {"fresnel", "schlick"}, ...
+  std::vector<std::string> coordinateNames;  // "mu", "roughness", ...
+  std::vector<std::string> channelMeanings;  // "E"; "A", "B"
+  std::vector<EvalPoint> points;
+  // `eval --json`'s line for points[i]: table, labels, coordinates, value,
+  // error ([A, B] for two channels), estimator, samples.
+  std::string JsonLine(size_t i) const;
+};
+
+EvalResult Evaluate(const EvalRequest &request);
+
+}  // namespace lutbake

@@ -1,0 +1,132 @@
+#include "lutbake/api/check.h"
+
+#include <tbb/global_control.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <mutex>
+#include <nlohmann/json.hpp>
+
+#include "bake_internal.h"
+#include "lutbake/core/error.h"
+
+namespace lutbake {
+
+namespace {
+
+const char *StatusName(CheckStatus s) {
+  switch (s) {
+    case CheckStatus::kPass: return "pass";
+    case CheckStatus::kFail: return "FAIL";
+    case CheckStatus::kSkipped: return "skip";
+  }
+  return "?";
+}
+
+std::string ReportJson(const CheckReport &report, const std::vector<std::string> &failed) {
+  nlohmann::ordered_json out;
+  out["dir"] = report.dir;
+  out["passed"] = report.passed();
+  out["failed"] = failed;
+  out["seconds"] = report.seconds;
+  out["referenceEvaluations"] = report.referenceEvaluations;
+  out["files"] = report.files;
+  out["checks"] = nlohmann::ordered_json::array();
+  for (const CheckResult &r : report.results) {
+    nlohmann::ordered_json c;
+    c["subject"] = r.subject;
+    c["check"] = r.check;
+    c["status"] = r.status == CheckStatus::kPass   ? "pass"
+                  : r.status == CheckStatus::kFail ? "fail"
+                                                   : "skipped";
+    c["detail"] = r.detail;
+    c["worst"] = r.worst;
+    if (r.allowed > 0.0) c["allowed"] = r.allowed;
+    nlohmann::ordered_json at = nlohmann::ordered_json::object();
+    for (const auto &[name, value] : r.at) at[name] = value;
+    c["at"] = at;
+    out["checks"].push_back(c);
+  }
+  return out.dump(2);
+}
+
+// printf into a string.
+template <typename... Args>
+std::string Printed(const char *format, Args... args) {
+  const int n = std::snprintf(nullptr, 0, format, args...);
+  std::string text(static_cast<size_t>(n) + 1, '\0');
+  std::snprintf(text.data(), text.size(), format, args...);
+  text.pop_back();
+  return text;
+}
+
+void SummariseReport(CheckOutcome *outcome) {
+  const CheckReport &report = outcome->report;
+  int passed = 0, skipped = 0;
+  for (const CheckResult &r : report.results) {
+    if (r.status == CheckStatus::kFail) {
+      outcome->failed.push_back(r.subject + " " + r.check);
+      // Each failure's reason, where it names the file (a truncated or
+      // foreign .bin) and what was expected.
+      outcome->failureText += "  " + r.subject + " " + r.check + ": " + r.detail + "\n";
+    }
+    passed += r.status == CheckStatus::kPass;
+    skipped += r.status == CheckStatus::kSkipped;
+  }
+  outcome->passed = outcome->failed.empty();
+  outcome->json = ReportJson(report, outcome->failed);
+  outcome->text = Printed(
+      "lutbake check %s: %zu checks, %d passed, %d skipped, %zu failed (%.1f s, %llu "
+      "quadrature evaluations)\n",
+      report.dir.c_str(), report.results.size(), passed, skipped, outcome->failed.size(),
+      report.seconds, static_cast<unsigned long long>(report.referenceEvaluations));
+  for (const CheckResult &r : report.results)
+    outcome->text += Printed("  %s  %-7s %-11s %s\n", StatusName(r.status), r.subject.c_str(),
+                             r.check.c_str(), r.detail.c_str());
+  if (outcome->passed) outcome->text += "all checks passed\n";
+}
+
+void SummarisePreset(CheckOutcome *outcome) {
+  const PresetCheck &check = outcome->preset;
+  outcome->passed = check.pass;
+  outcome->json = check.json;
+  for (const PresetFileCheck &f : check.files)
+    outcome->text += Printed("%-4s %-40s max |stored - integral| %.2e (errorMax %.2e)%s%s\n",
+                             f.pass ? "pass" : "FAIL", f.file.c_str(), f.worst, f.errorMax,
+                             f.pass ? "" : ": ", f.problem.c_str());
+}
+
+}  // namespace
+
+CheckOutcome Check(const CheckRequest &request) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(request.dir, ec))
+    throw UsageError(request.dir +
+                     (fs::exists(request.dir, ec) ? " is not a directory" : " does not exist") +
+                     "; accepted: the directory of a bake");
+  tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
+                                  static_cast<size_t>(ThreadCount(request.threads)));
+  CheckOutcome outcome;
+  if (fs::exists(fs::path(request.dir) / "preset.json", ec)) {
+    outcome.isPreset = true;
+    outcome.preset = CheckPresetDirectory(request.dir);
+    SummarisePreset(&outcome);
+    return outcome;
+  }
+  CheckOptions options;
+  options.randomPoints = request.points;
+  options.furnaceGrid = request.furnaceGrid;
+  options.seed = request.seed;
+  std::mutex progressMutex;
+  if (request.progress)
+    options.progress = [&](double fraction) {
+      std::lock_guard<std::mutex> lock(progressMutex);
+      request.progress(fraction);
+    };
+  outcome.report = CheckBakedSet(request.dir, options);
+  SummariseReport(&outcome);
+  return outcome;
+}
+
+}  // namespace lutbake

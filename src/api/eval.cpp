@@ -1,0 +1,215 @@
+// lutbake::Evaluate: the request's checks in the order the command line
+// has always made them (model options, coordinates the table does not take,
+// required and out-of-range coordinates, sampling, estimator, the number
+// of points), then every point in parallel.
+#include "lutbake/api/eval.h"
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "bake_internal.h"
+#include "lutbake/api/names.h"
+#include "lutbake/core/error.h"
+
+namespace lutbake {
+
+namespace {
+
+// The shortest decimal that reads back as v.
+std::string ShortestDecimal(double v) {
+  char text[40];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
+    if (std::strtod(text, nullptr) == v) break;
+  }
+  return text;
+}
+
+BakeSettings SettingsOf(const EvalRequest &r) {
+  BakeSettings settings;
+  settings.ndf = r.ndf.value_or(settings.ndf);
+  settings.smith = r.smith.value_or(settings.smith);
+  settings.fresnel = r.fresnel.value_or(settings.fresnel);
+  settings.sheenVisibility = r.sheenVisibility.value_or(settings.sheenVisibility);
+  settings.sheenAlpha = r.sheenAlpha.value_or(settings.sheenAlpha);
+  return settings;
+}
+
+// Options that choose a model the table does not have are refused, so that
+// a typo cannot go unnoticed.
+void CheckModelOptions(const EvalRequest &r, const TableDefinition &table) {
+  const std::vector<std::string> models = table.ModelOptions();
+  const std::pair<const char *, bool> given[] = {
+      {"ndf", r.ndf.has_value()},
+      {"smith", r.smith.has_value()},
+      {"fresnel", r.fresnel.has_value()},
+      {"sheen-visibility", r.sheenVisibility.has_value()},
+      {"sheen-alpha", r.sheenAlpha.has_value()}};
+  for (const auto &[option, set] : given)
+    if (set && std::find(models.begin(), models.end(), option) == models.end())
+      throw UsageError(std::string("--") + option + " does not apply to --table " + table.Name());
+}
+
+// The coordinates given that the table does not take with these settings
+// are refused rather than ignored.
+void CheckCoordinatesApply(const EvalRequest &r, const TableDefinition &table,
+                           const std::vector<PointCoordinate> &coordinates,
+                           const std::string &variant) {
+  const std::string name = table.Name();
+  std::string takes;
+  for (const PointCoordinate &c : coordinates)
+    takes += (takes.empty() ? "--" : " and --") + c.option;
+  const std::vector<std::string> variantOptions = table.CoordinateOptions();
+  for (const auto &entry : r.coordinates) {
+    const std::string &option = entry.first;  // named: lambdas cannot capture bindings in C++17
+    if (entry.second.empty()) continue;
+    if (std::any_of(coordinates.begin(), coordinates.end(),
+                    [&](const PointCoordinate &c) { return c.option == option; }))
+      continue;
+    if (std::find(variantOptions.begin(), variantOptions.end(), option) != variantOptions.end())
+      throw UsageError("--table " + name + variant + " takes " + takes + "; --" + option +
+                       " does not apply to it");
+    std::string users;
+    for (const TableDefinition *other : AllTables()) {
+      const std::vector<std::string> options = other->CoordinateOptions();
+      if (std::find(options.begin(), options.end(), option) != options.end())
+        users += (users.empty() ? "" : ", ") + std::string(other->Name());
+    }
+    if (users.empty())
+      throw UsageError("--" + option + " is not a coordinate of any table; accepted: " +
+                       "mu, roughness, sigma, f0, eta, k, tint");
+    throw UsageError("--" + option + " does not apply to --table " + name +
+                     "; it applies only to --table " + users);
+  }
+}
+
+// Each coordinate's values: given, or 0 for one that is not required.
+std::vector<std::vector<double>> CoordinateValues(const EvalRequest &r, const std::string &name,
+                                                  const std::vector<PointCoordinate> &coordinates,
+                                                  const std::string &variant) {
+  std::vector<std::vector<double>> values;
+  for (const PointCoordinate &c : coordinates) {
+    const auto found = r.coordinates.find(c.option);
+    if (found == r.coordinates.end() || found->second.empty()) {
+      if (c.required) throw UsageError("--table " + name + variant + " needs --" + c.option);
+      values.push_back({0.0});
+      continue;
+    }
+    const std::vector<double> &list = found->second;
+    const auto spelled = r.spelling.find(c.option);
+    for (size_t i = 0; i < list.size(); ++i) {
+      if (c.Accepts(list[i])) continue;
+      const bool hasSpelling = spelled != r.spelling.end() && i < spelled->second.size();
+      throw UsageError(
+          "--" + c.option + ": '" + (hasSpelling ? spelled->second[i] : ShortestDecimal(list[i])) +
+          "' is out of range for --table " + name + variant + "; accepted: " + c.accepted);
+    }
+    values.push_back(list);
+  }
+  return values;
+}
+
+// "exact" for the closed form of the mirror (alpha = 0), else the estimator
+// that produced the value (a tolerance run may switch a point to the
+// quadrature).
+std::string EstimatorUsed(const PointValue &v, const BakeSettings &s) {
+  if (v.exact) return "exact";
+  return v.quadrature ? "quadrature" : std::string(ToString(s.estimator));
+}
+
+}  // namespace
+
+EvalResult Evaluate(const EvalRequest &r) {
+  const TableDefinition *found = FindTable(r.table);
+  if (!found)
+    throw UsageError("--table '" + r.table +
+                     "' is not accepted; accepted: " + JoinNames(TableNames()));
+  const TableDefinition &table = *found;
+  const std::string name = table.Name();
+  BakeSettings settings = SettingsOf(r);
+  CheckModelOptions(r, table);
+
+  EvalResult result;
+  result.table = name;
+  result.labels = table.PointLabels(settings);
+  std::string variant;  // " --fresnel schlick"
+  for (const auto &[option, value] : result.labels) variant += " --" + option + " " + value;
+  const std::vector<PointCoordinate> coordinates = table.Coordinates(settings);
+  for (const PointCoordinate &c : coordinates) result.coordinateNames.push_back(c.option);
+  CheckCoordinatesApply(r, table, coordinates, variant);
+  const std::vector<std::vector<double>> values = CoordinateValues(r, name, coordinates, variant);
+  ApplySampling(r.sampling, &settings);
+  if (const std::string problem = table.EstimatorProblem(settings.estimator); !problem.empty())
+    throw UsageError("--estimator " + std::string(ToString(settings.estimator)) + ": " + problem);
+
+  // Row-major, as a table stores them: z outer, then y, x inner.
+  const std::vector<double> &xs = values[0];
+  const std::vector<double> ys = values.size() > 1 ? values[1] : std::vector<double>{0.0};
+  const std::vector<double> zs = values.size() > 2 ? values[2] : std::vector<double>{0.0};
+  const double count = static_cast<double>(xs.size()) * ys.size() * zs.size();
+  if (count > kMaxEvalPoints) {
+    std::string options;
+    for (const PointCoordinate &c : coordinates)
+      options += (options.empty() ? "--" : " x --") + c.option;
+    throw UsageError(FormatDouble(count) + " points (" + options + "); accepted: at most " +
+                     std::to_string(kMaxEvalPoints));
+  }
+  std::vector<std::array<double, 3>> at;
+  for (double z : zs)
+    for (double y : ys)
+      for (double x : xs) at.push_back({x, y, z});
+  const bool threeD = coordinates.size() > 2;
+  std::vector<PointValue> pointValues(at.size());
+  tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
+                                  static_cast<size_t>(ThreadCount(r.threads)));
+  try {
+    tbb::parallel_for(size_t{0}, at.size(), [&](size_t i) {
+      const auto &[x, y, z] = at[i];
+      pointValues[i] =
+          threeD ? table.Evaluate3D(settings, x, y, z) : table.Evaluate(settings, x, y);
+    });
+  } catch (const std::domain_error &e) {
+    throw UsageError(std::string(e.what()) + " (--table " + name + ")");
+  }
+
+  result.channelMeanings = table.ChannelMeanings();
+  const int channels = table.Channels();
+  for (size_t i = 0; i < at.size(); ++i) {
+    const PointValue &v = pointValues[i];
+    EvalPoint p;
+    p.coordinates.assign(at[i].begin(), at[i].begin() + coordinates.size());
+    p.values.assign(v.value, v.value + channels);
+    p.errors.assign(v.error, v.error + channels);
+    p.estimator = EstimatorUsed(v, settings);
+    p.samples = v.samples;
+    result.points.push_back(std::move(p));
+  }
+  return result;
+}
+
+std::string EvalResult::JsonLine(size_t i) const {
+  const EvalPoint &p = points[i];
+  nlohmann::ordered_json line;
+  line["table"] = table;
+  for (const auto &[option, value] : labels) line[option] = value;
+  for (size_t c = 0; c < coordinateNames.size(); ++c) line[coordinateNames[c]] = p.coordinates[c];
+  if (p.values.size() == 2) {
+    line["value"] = {p.values[0], p.values[1]};
+    line["error"] = {p.errors[0], p.errors[1]};
+  } else {
+    line["value"] = p.values[0];
+    line["error"] = p.errors[0];
+  }
+  line["estimator"] = p.estimator;
+  line["samples"] = p.samples;
+  return line.dump();
+}
+
+}  // namespace lutbake
