@@ -457,6 +457,11 @@ BakeResult Bake(const BakeRequest &r) {
   if (r.presetFiles && r.preset.empty())
     throw UsageError("--files chooses files of a preset; it needs --preset NAME (" +
                      JoinNames(PresetNames()) + ")");
+  if (r.commandLine.empty()) {
+    BakeRequest spelled = r;
+    spelled.commandLine = EquivalentCommandLine(r);
+    return Bake(spelled);
+  }
   if (!r.preset.empty()) return BakePreset(r);
   ValidateTableNames(r);
   const BakeSettings settings = SettingsOf(r);
@@ -470,7 +475,7 @@ BakeResult Bake(const BakeRequest &r) {
   }
   CheckJobs(list.jobs);
   const std::vector<const TableFormat *> formats = FormatsOf(r);
-  OutputTransaction output(r.outputDirectory);
+  OutputTransaction output(r.outputDirectory, "--out", OutputMode::kSet, r.commandLine);
   result.threads = ThreadCount(r.threads);
   result.tolerance = settings.tolerance;
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
@@ -487,6 +492,9 @@ BakeResult Bake(const BakeRequest &r) {
                     JoinNames(run.unreached) +
                     "; nothing written. Raise --max-samples or drop --sampling-only.");
   output.Commit(r.cancellation);
+  result.foreignFiles = output.foreignFiles();
+  result.removedFiles = output.removedFiles();
+  result.files.push_back({output.PathOf(kSetManifestName), "", "set", 0.0, 0.0});
   result.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.json = SummaryJson(result);

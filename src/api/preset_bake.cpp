@@ -177,7 +177,7 @@ BakeResult BakePreset(const BakeRequest &r) {
   const Preset *preset = FindPreset(r.preset);
   if (!preset) throw UsageError("--preset " + r.preset + ": accepted: " + PresetNameList());
   const std::vector<const PresetTexture *> textures = ChosenTextures(r, *preset);
-  OutputTransaction output(r.outputDirectory);
+  OutputTransaction output(r.outputDirectory, "--out", OutputMode::kSet, r.commandLine);
   BakeResult result;
   result.outputDirectory = r.outputDirectory;
   result.threads = ThreadCount(r.threads);
@@ -226,6 +226,9 @@ BakeResult BakePreset(const BakeRequest &r) {
   const std::string path = output.WriteText("preset.json", manifest.dump(2) + "\n");
   result.files.push_back({path, "", "json", 0.0, 0.0});
   output.Commit(r.cancellation);
+  result.foreignFiles = output.foreignFiles();
+  result.removedFiles = output.removedFiles();
+  result.files.push_back({output.PathOf(kSetManifestName), "", "set", 0.0, 0.0});
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   manifest["seconds"] = result.seconds;
   result.presetJson = manifest.dump(2);

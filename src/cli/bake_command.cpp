@@ -221,6 +221,10 @@ void PrintResult(const BakeResult &result, bool json) {
     for (const std::string &line : result.nothingToBake) std::cerr << "  " << line << "\n";
     return;
   }
+  if (!result.foreignFiles.empty())
+    std::cerr << "lutbake bake: " << result.outputDirectory << " also holds "
+              << result.foreignFiles.size() << " file(s) lutbake did not write, left as they were: "
+              << JoinNames(result.foreignFiles) << "\n";
   if (result.tolerance > 0.0) {
     double worst = 0.0;
     for (const BakedTable &t : result.tables) worst = std::max(worst, t.integrationErrorMax);

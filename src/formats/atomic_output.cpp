@@ -226,6 +226,20 @@ void AtomicOutputSet::Commit() {
   entries_.clear();
 }
 
+void AtomicOutputSet::LinkInto(const std::string &directory) {
+  for (const Entry &e : entries_) {
+    const std::string target =
+        (std::filesystem::path(directory) / std::filesystem::path(e.finalPath).filename()).string();
+    // The anonymous temporaries through /proc (AT_SYMLINK_FOLLOW), the named
+    // ones by their name.
+    const std::string &source = e.namedPath.empty() ? e.writePath : e.namedPath;
+    if (::linkat(AT_FDCWD, source.c_str(), AT_FDCWD, target.c_str(), AT_SYMLINK_FOLLOW) != 0)
+      throw IoError("cannot write " + e.finalPath + ": " + Reason());
+  }
+  Discard();  // the named temporaries' names go; the files live on in `directory`
+  committed_ = true;
+}
+
 void AtomicOutputSet::Undo() {
   // Best effort, in reverse: what cannot be moved back stays under a
   // temporary name, stale once we end.

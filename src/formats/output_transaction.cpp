@@ -2,15 +2,24 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <stdio.h>  // renameat2
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
 
 #include "lutbake/core/error.h"
+#include "lutbake/tables/bake.h"
 
 namespace lutbake {
 
@@ -68,8 +77,98 @@ void RemoveCreatedDirectory(const std::string &dir, bool created) {
   fs::remove(dir, ec);  // only succeeds if still empty
 }
 
-OutputTransaction::OutputTransaction(const std::string &directory, const std::string &optionName)
-    : directory_(directory) {
+namespace {
+
+std::atomic<unsigned long> siblingCounter{0};
+
+bool PlainName(const std::string &name) {
+  return !name.empty() && name != "." && name != ".." && name.find('/') == std::string::npos;
+}
+
+std::string SiblingPrefix(const fs::path &directory) {
+  return "." + directory.filename().string() + ".lutbake-set-";
+}
+
+// The directory as an absolute path without "." or ".." or a trailing slash.
+fs::path Canonical(const std::string &directory) {
+  std::error_code ec;
+  fs::path path = fs::weakly_canonical(fs::absolute(directory), ec);
+  if (ec) path = fs::absolute(directory);
+  if (path.filename().empty()) path = path.parent_path();
+  return path;
+}
+
+bool SameInode(const fs::path &a, const fs::path &b) {
+  struct stat sa, sb;
+  return ::lstat(a.c_str(), &sa) == 0 && ::lstat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
+         sa.st_ino == sb.st_ino;
+}
+
+// Empties and removes a set sibling `sibling` of `directory`: what its own
+// lutbake-set.json lists, and hard links to files `directory` holds too, are
+// removed; anything else (a file made in the directory while the two were
+// being exchanged) moves back into `directory` when its name is free there,
+// and otherwise stays, with the sibling, for a person to see.
+void RetireSibling(const fs::path &sibling, const fs::path &directory) {
+  const std::vector<std::string> listed = ReadSetManifest(sibling.string());
+  std::error_code ec;
+  bool kept = false;
+  for (const auto &entry : fs::directory_iterator(sibling, ec)) {
+    const std::string name = entry.path().filename().string();
+    const fs::path there = directory / name;
+    const bool ours = name == kSetManifestName ||
+                      std::find(listed.begin(), listed.end(), name) != listed.end() ||
+                      IsTemporaryName(name);
+    // Ours, a link to a file the directory holds, or a file the directory
+    // now holds a newer one of.
+    if (ours || SameInode(entry.path(), there) || fs::exists(fs::symlink_status(there, ec))) {
+      ::unlink(entry.path().c_str());
+    } else if (::renameat2(AT_FDCWD, entry.path().c_str(), AT_FDCWD, there.c_str(),
+                           RENAME_NOREPLACE) != 0) {
+      kept = true;
+    }
+  }
+  if (!kept) ::rmdir(sibling.c_str());
+}
+
+// Siblings of `directory` that killed runs left: those whose lock (held by
+// a living owner) can be taken.
+void RetireStaleSiblings(const fs::path &directory) {
+  const std::string prefix = SiblingPrefix(directory);
+  std::error_code ec;
+  for (const auto &entry : fs::directory_iterator(directory.parent_path(), ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(prefix, 0) != 0 || !entry.is_directory(ec)) continue;
+    const int fd = ::open(entry.path().c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) continue;
+    if (::flock(fd, LOCK_EX | LOCK_NB) == 0) RetireSibling(entry.path(), directory);
+    ::close(fd);
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> ReadSetManifest(const std::string &directory) {
+  const fs::path path = fs::path(directory) / kSetManifestName;
+  std::error_code ec;
+  const std::uintmax_t bytes = fs::file_size(path, ec);
+  if (ec || bytes > (std::uintmax_t{16} << 20)) return {};
+  std::vector<std::string> names;
+  try {
+    std::ifstream in(path, std::ios::binary);
+    const nlohmann::json manifest = nlohmann::json::parse(in);
+    for (const nlohmann::json &file : manifest.at("files"))
+      if (file.is_string() && PlainName(file.get<std::string>()))
+        names.push_back(file.get<std::string>());
+  } catch (const std::exception &) {
+    return {};  // not lutbake's: nothing in the directory counts as its set
+  }
+  return names;
+}
+
+OutputTransaction::OutputTransaction(const std::string &directory, const std::string &optionName,
+                                     OutputMode mode, const std::string &description)
+    : directory_(directory), mode_(mode), description_(description) {
   bool usageError = false;
   const std::string problem = PrepareOutputDirectory(directory_, &created_, &usageError);
   if (!problem.empty()) {
@@ -79,6 +178,10 @@ OutputTransaction::OutputTransaction(const std::string &directory, const std::st
   }
   // What earlier runs killed here left: temporaries no live process owns.
   RemoveStaleTemporaries(directory_);
+  if (mode_ == OutputMode::kSet) {
+    RetireStaleSiblings(Canonical(directory_));
+    previousSet_ = ReadSetManifest(directory_);
+  }
 }
 
 OutputTransaction::~OutputTransaction() {
@@ -112,8 +215,113 @@ void OutputTransaction::Commit(const CancellationToken *cancellation) {
   // The last moment a cancellation stops the run; one that arrives during
   // the commit (milliseconds: renames) lets it finish.
   if (cancellation) cancellation->ThrowIfCancelled();
-  output_.Commit();
+  if (mode_ == OutputMode::kSet) {
+    CommitSet();
+  } else {
+    output_.Commit();
+  }
   committed_ = true;
+}
+
+void OutputTransaction::CommitSet() {
+  std::vector<std::string> newNames;
+  for (const std::string &path : files_) newNames.push_back(fs::path(path).filename().string());
+  nlohmann::ordered_json manifest;
+  manifest["lutbakeSet"] = 1;
+  manifest["lutbakeVersion"] = LutbakeVersion();
+  manifest["commandLine"] = description_;
+  manifest["files"] = newNames;
+  WriteText(kSetManifestName, manifest.dump(2) + "\n");
+  const auto isNew = [&](const std::string &n) {
+    return n == kSetManifestName || std::find(newNames.begin(), newNames.end(), n) != newNames.end();
+  };
+  // What the directory holds besides the new set: the previous set's other
+  // files (to go) and everything else (to stay, untouched).
+  std::vector<std::string> oldSetNames;
+  bool anyEntry = false;
+  std::error_code ec;
+  for (const auto &entry : fs::directory_iterator(directory_, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (IsTemporaryName(name) || name.rfind(".lutbake-probe-", 0) == 0) continue;
+    anyEntry = true;
+    if (isNew(name)) continue;
+    if (std::find(previousSet_.begin(), previousSet_.end(), name) != previousSet_.end())
+      oldSetNames.push_back(name);
+    else
+      foreign_.push_back(name);
+  }
+  std::sort(foreign_.begin(), foreign_.end());
+  removed_ = oldSetNames;
+  // An empty directory cannot mix two sets: the files go in one by one.
+  if (anyEntry && TryExchange(oldSetNames)) return;
+  output_.Commit();
+  for (const std::string &name : oldSetNames) ::unlink((fs::path(directory_) / name).c_str());
+}
+
+bool OutputTransaction::TryExchange(const std::vector<std::string> &oldSetNames) {
+  (void)oldSetNames;  // the exchange leaves them in the sibling, which is retired
+  const fs::path directory = Canonical(directory_);
+  std::error_code ec;
+  const fs::path cwd = fs::current_path(ec);
+  const std::string relative = fs::relative(cwd, directory, ec).string();
+  if (ec || relative == "." || relative.rfind("..", 0) != 0) return false;  // cwd inside
+  for (const std::string &name : foreign_)
+    if (fs::is_directory(fs::symlink_status(directory / name, ec))) return false;
+  struct stat dirStat;
+  if (::stat(directory.c_str(), &dirStat) != 0) return false;
+  const fs::path sibling =
+      directory.parent_path() / (SiblingPrefix(directory) + std::to_string(::getpid()) + "-" +
+                                 std::to_string(siblingCounter.fetch_add(1)));
+  if (::mkdir(sibling.c_str(), 0700) != 0) return false;  // a read-only parent, say
+  const int lock = ::open(sibling.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (lock >= 0) ::flock(lock, LOCK_EX);
+  const auto abandon = [&] {
+    RetireSibling(sibling, directory);
+    ::rmdir(sibling.c_str());
+    if (lock >= 0) ::close(lock);
+    return false;
+  };
+  // The sibling looks like the directory: its mode, and (as root) its owner.
+  ::chmod(sibling.c_str(), dirStat.st_mode & 07777);
+  if (::geteuid() == 0 && ::chown(sibling.c_str(), dirStat.st_uid, dirStat.st_gid) != 0) {
+  }
+  // The foreign files, as hard links (the same files, not copies).
+  for (const std::string &name : foreign_)
+    if (::linkat(AT_FDCWD, (directory / name).c_str(), AT_FDCWD, (sibling / name).c_str(), 0) != 0)
+      return abandon();
+  try {
+    output_.LinkInto(sibling.string());
+  } catch (const IoError &) {
+    return abandon();
+  }
+  // From here the new set lives only in the sibling.
+  const int siblingFd = ::open(sibling.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (siblingFd >= 0) {
+    ::fsync(siblingFd);
+    ::close(siblingFd);
+  }
+  if (::renameat2(AT_FDCWD, sibling.c_str(), AT_FDCWD, directory.c_str(), RENAME_EXCHANGE) != 0) {
+    // No exchange here: install the new files one by one from the sibling.
+    const std::vector<std::string> installed = ReadSetManifest(sibling.string());
+    for (const std::string &name : installed)
+      if (::rename((sibling / name).c_str(), (directory / name).c_str()) != 0)
+        throw IoError("cannot write " + (fs::path(directory_) / name).string() + ": " +
+                      std::strerror(errno));
+    ::rename((sibling / kSetManifestName).c_str(), (directory / kSetManifestName).c_str());
+    for (const std::string &name : oldSetNames) ::unlink((directory / name).c_str());
+    abandon();
+    return true;
+  }
+  const int parentFd = ::open(directory.parent_path().c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (parentFd >= 0) {
+    ::fsync(parentFd);
+    ::close(parentFd);
+  }
+  exchanged_ = true;
+  // The sibling now holds the previous set and links to the foreign files.
+  RetireSibling(sibling, directory);
+  if (lock >= 0) ::close(lock);
+  return true;
 }
 
 void OutputTransaction::Discard() {

@@ -13,7 +13,6 @@
 
 #include "lutbake/formats/writer.h"
 #include "lutbake/integrators/albedo_quadrature.h"
-#include "lutbake/integrators/gauss_legendre.h"
 #include "lutbake/integrators/sheen_quadrature.h"
 #include "lutbake/tables/table_definition.h"
 
@@ -154,31 +153,15 @@ PointValue SplitSum(const PresetModel &model, double mu, double alpha) {
   return TableNamed("dfg").Evaluate(settings, mu, std::sqrt(alpha));
 }
 
-// The albedo of Burley's diffuse as Unity HDRP renormalises it
-// (DisneyDiffuseNoPI / pi):
-//   f = F(mu_i) F(mu_o) / (1.03571 pi),  F(u) = 1 + g (1 - u)^5,
-//   g = fd90 - 1 = p - 1/2 + p (l.v),  l.v = mu_o mu_i + s_o s_i cos(phi),
-// p the perceptual roughness. Write g = P + Q cos(phi), P = p - 1/2 + p mu_o
-// mu_i, Q = p s_o s_i: the product F(mu_i) F(mu_o) = 1 + g (a + b) + g^2 a b
-// (a = (1 - mu_i)^5, b = (1 - mu_o)^5) averages over phi to 1 + P (a + b) +
-// (P^2 + Q^2 / 2) a b, and Q^2 = p^2 s_o^2 (1 - mu_i^2), so
-//   albedo = 2 / 1.03571 int_0^1 mu_i [1 + P (a + b) + (P^2 + Q^2/2) a b] dmu_i,
-// a polynomial of degree 8 in mu_i: Gauss-Legendre with 8 nodes is exact,
-// up to rounding (bound 1e-15).
-PointValue DisneyDiffuseAlbedo(double mu_o, double p) {
-  const GaussLegendreRule &rule = GaussLegendre(8);
-  const double b = std::pow(1.0 - mu_o, 5.0), s2_o = (1.0 - mu_o) * (1.0 + mu_o);
-  double sum = 0.0;
-  for (int k = 0; k < rule.n; ++k) {
-    const double mu_i = rule.x[k], a = std::pow(1.0 - mu_i, 5.0);
-    const double P = p - 0.5 + p * mu_o * mu_i;
-    const double Q2 = p * p * s2_o * (1.0 - mu_i) * (1.0 + mu_i);
-    sum += rule.w[k] * mu_i * (1.0 + P * (a + b) + (P * P + 0.5 * Q2) * a * b);
-  }
-  PointValue v;
-  v.value[0] = 2.0 / 1.03571 * sum;
-  v.error[0] = 1e-15;
-  v.quadrature = true;
+// The albedo of Burley's diffuse as Unity HDRP renormalises it: its
+// DisneyDiffuseNoPI divides F(mu_i) F(mu_o) by 1.03571 (29/28 rounded, the
+// albedo at mu_o = 1 and perceptual roughness 1), so its albedo is table
+// burley_E's (the closed form, burley_E.cpp) over 1.03571.
+constexpr double kHdrpDisneyNormalisation = 1.03571;
+PointValue DisneyDiffuseAlbedo(double mu_o, double perceptualRoughness) {
+  PointValue v = TableNamed("burley_E").Evaluate(BakeSettings{}, mu_o, perceptualRoughness);
+  v.value[0] /= kHdrpDisneyNormalisation;
+  v.error[0] /= kHdrpDisneyNormalisation;
   return v;
 }
 

@@ -19,5 +19,6 @@ const TableDefinition &SpecularAlbedoTable();         // spec_E.cpp
 const TableDefinition &SpecularAverageAlbedoTable();  // spec_Eavg.cpp
 const TableDefinition &OrenNayarAlbedoTable();        // oren_nayar_E.cpp
 const TableDefinition &OrenNayarFullAlbedoTable();    // oren_nayar_E.cpp
+const TableDefinition &BurleyAlbedoTable();           // burley_E.cpp
 
 }  // namespace lutbake

@@ -23,6 +23,7 @@ const std::vector<const TableDefinition *> &AllTables() {
       &SpecularAverageAlbedoTable(),
       &OrenNayarAlbedoTable(),
       &OrenNayarFullAlbedoTable(),
+      &BurleyAlbedoTable(),
   };
   // clang-format on
   return tables;

@@ -100,9 +100,10 @@ struct BakeRequest {
   std::string preset;
   std::optional<std::vector<std::string>> presetFiles;
 
-  // Recorded in every file's metadata (the command line, or the caller's
-  // own description of the request).
-  std::string commandLine = "lutbake::Bake";
+  // Recorded in every file's metadata. Empty: the equivalent command line
+  // (EquivalentCommandLine), so that a request and `lutbake bake` with the
+  // same options write the same bytes.
+  std::string commandLine;
 
   // Hooks. Polled between texels; once cancelled, Bake throws Cancelled.
   const CancellationToken *cancellation = nullptr;
@@ -125,6 +126,12 @@ struct BakeResult {
   int threads = 0;
   double tolerance = 0.0;  // the request's, 0 if none
   double seconds = 0.0;
+  // The directory holds one lutbake set (lutbake-set.json lists it): the
+  // previous set's files this one does not write were removed
+  // (removedFiles); files no lutbake set lists were left as they were
+  // (foreignFiles). Names, not paths.
+  std::vector<std::string> removedFiles;
+  std::vector<std::string> foreignFiles;
   // The preset's description (preset.json's content) for a preset bake.
   std::string presetJson;
   // A plan that needed no table: nothing was written, nothing created
@@ -137,5 +144,10 @@ struct BakeResult {
 };
 
 BakeResult Bake(const BakeRequest &request);
+
+// The `lutbake bake` command line that asks for what `request` asks:
+// "lutbake bake --out DIR --tables E,dfg --format exr,header ...", options
+// in the order of `lutbake bake --help`, only those set.
+std::string EquivalentCommandLine(const BakeRequest &request);
 
 }  // namespace lutbake

@@ -53,6 +53,12 @@ class AtomicOutputSet {
   void Commit();
   // Removes every temporary (nothing under a final name is touched).
   void Discard();
+  // Instead of Commit: links every file written, complete and durable, into
+  // `directory` (on the same file system) under its final file name, then
+  // forgets the temporaries. The caller installs `directory` as a whole
+  // (OutputTransaction's exchange). Throws IoError, having linked nothing
+  // it keeps, when a link fails.
+  void LinkInto(const std::string &directory);
 
   // For tests: called after every rename, link or removal that Commit makes,
   // with its step ("link", "backup", "install", "remove") and the file's

@@ -106,8 +106,9 @@ struct PresetModel {
 //   "glass_E"   rough glass's directional albedo, reflection + transmission
 //               (table glass_E) at the texel's eta
 //   "glass_Eavg"  its cosine-weighted average over mu (table glass_Eavg)
-//   "disney_diffuse"  Burley's diffuse albedo as Unity HDRP renormalises it
-//               (preset.cpp, DisneyDiffuseAlbedo), at perceptual roughness
+//   "disney_diffuse"  Burley's diffuse albedo as Unity HDRP renormalises it:
+//               table burley_E / 1.03571 (preset.cpp, DisneyDiffuseAlbedo), at
+//               perceptual roughness
 //   "one", "zero"  constants (a channel the engine does not read)
 // A format that holds only [0, 1] (PNG) takes min(stored, clampMax); the
 // texel's bound then adds what the clamp moved it by, so that it still
