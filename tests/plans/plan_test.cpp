@@ -484,7 +484,8 @@ TEST(PlanBake, WritesExactlyThePlanAndChecks) {
   Bake(request);
   EXPECT_EQ(test::FileNames(out),
             (std::vector<std::string>{"E.bin", "E.exr", "E.h", "Eavg.bin", "Eavg.exr", "Eavg.h",
-                                      "Favg.h", "dfg.bin", "dfg.exr", "dfg.h", "kulla_conty.h"}));
+                                      "Favg.h", "dfg.bin", "dfg.exr", "dfg.h", "kulla_conty.h",
+                                      "lutbake-set.json"}));
   const Table e = ReadExrTable((out / "E.exr").string());
   EXPECT_TRUE(e.y.listed());
   EXPECT_EQ(e.y.nodes, (std::vector<double>{0.25, 0.5}));
@@ -589,7 +590,8 @@ TEST(PlanBake, TablesSelectAmongThePlannedOnes) {
   request.size = 8;
   request.sampling.samples = 256;
   Bake(request);
-  EXPECT_EQ(test::FileNames(out), (std::vector<std::string>{"E.h", "Eavg.h", "kulla_conty.h"}));
+  EXPECT_EQ(test::FileNames(out),
+            (std::vector<std::string>{"E.h", "Eavg.h", "kulla_conty.h", "lutbake-set.json"}));
   const HeaderValues e = ReadHeaderValues((out / "E.h").string());
   EXPECT_EQ(e.height, 2);  // the scene's two listed roughness values
   fs::remove_all(out);

@@ -22,11 +22,12 @@
 
 namespace lutbake::test {
 
-// `lutbake bake --out dir` with no other option.
+// `lutbake bake --out dir` with no other option. commandLine is left empty:
+// the files record EquivalentCommandLine(request), as `lutbake bake` with the
+// same options would write them.
 inline BakeRequest BakeRequestFor(const std::filesystem::path &dir) {
   BakeRequest request;
   request.outputDirectory = dir.string();
-  request.commandLine = "lutbake tests: lutbake::Bake";
   return request;
 }
 

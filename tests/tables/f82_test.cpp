@@ -375,8 +375,9 @@ TEST(F82Table, ManifestMetalsArePlannedBakedAndChecked) {
   request.size = 8;
   request.formats = {"bin"};
   Bake(request);
-  EXPECT_EQ(test::FileNames(out), (std::vector<std::string>{"Favg_dielectric.bin", "Favg_f82.bin",
-                                                            "dfg.bin", "f82.bin"}));
+  EXPECT_EQ(test::FileNames(out),
+            (std::vector<std::string>{"Favg_dielectric.bin", "Favg_f82.bin", "dfg.bin", "f82.bin",
+                                      "lutbake-set.json"}));
   const Table c = ReadBinaryTable((out / "f82.bin").string());
   EXPECT_EQ(c.x.count, 8);
   EXPECT_EQ(c.y.nodes, (std::vector<double>{0.1, 0.25, 0.3}));

@@ -235,8 +235,8 @@ TEST(SheenTables, SceneWithSheenIsPlannedAndBaked) {
   request.tables = {"sheen_E"};
   request.sheenVisibility = SheenVisibility::kAshikhmin;
   Bake(request);
-  EXPECT_EQ(test::FileNames(out),
-            (std::vector<std::string>{"sheen_E.bin", "sheen_E.exr", "sheen_E.h"}));
+  EXPECT_EQ(test::FileNames(out), (std::vector<std::string>{"lutbake-set.json", "sheen_E.bin",
+                                                            "sheen_E.exr", "sheen_E.h"}));
   const Table t = ReadExrTable((out / "sheen_E.exr").string());
   EXPECT_EQ(t.y.name, "sheenRoughness");
   EXPECT_EQ(t.y.min, 0.0);
