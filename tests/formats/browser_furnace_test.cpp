@@ -40,6 +40,8 @@
 #include <sstream>
 
 #include "lutbake/formats/table_reader.h"
+#include "lutbake/lutbake.h"
+#include "support/bake_for_test.h"
 #include "support/cli_run.h"
 #include "support/headless_chromium.h"
 
@@ -154,10 +156,13 @@ TEST(BrowserFurnace, WebGl2ShadesTheFurnaceFromTheEmittedModuleAndGlsl) {
     GTEST_SKIP() << "chromium not found: the WebGL2 furnace is not rendered here "
                     "(scripts/setup.sh installs Debian's chromium)";
   const fs::path d = test::Scratch("browser_furnace");
-  const test::CommandResult bake =
-      test::Lutbake("bake --out " + d.string() + " --tables E,Eavg,dfg --size " +
-                    std::to_string(kSize) + " --format exr,js-half --shader glsl");
-  ASSERT_EQ(bake.status, 0) << bake.output;
+  // --tables E,Eavg,dfg --size kSize --format exr,js-half --shader glsl
+  BakeRequest request = test::BakeRequestFor(d);
+  request.tables = {"E", "Eavg", "dfg"};
+  request.size = kSize;
+  request.formats = {"exr", "js-half"};
+  request.shaders = {"glsl"};
+  Bake(request);
   const nlohmann::json sources = {{"E", ReadText(d / "E.js")},
                                   {"Eavg", ReadText(d / "Eavg.js")},
                                   {"dfg", ReadText(d / "dfg.js")},

@@ -3,7 +3,7 @@
 // its storage precision (float32 bit for bit; half as the binary16 nearest
 // to the float32 value, ties to even), the metadata each file states
 // (axes, errorMax of its storage), the ES module evaluated by node, and
-// `lutbake check` holding each to its storage.
+// CheckBakedSet (`lutbake check`) holding each to its storage.
 #include "lutbake/formats/source_formats.h"
 
 #include <Imath/half.h>
@@ -16,8 +16,10 @@
 
 #include "lutbake/formats/table_reader.h"
 #include "lutbake/formats/writer.h"
+#include "lutbake/lutbake.h"
 #include "lutbake/tables/storage.h"
 #include "lutbake/validation/check.h"
+#include "support/bake_for_test.h"
 #include "support/cli_run.h"
 #include "support/small_tables.h"
 
@@ -159,15 +161,18 @@ TEST(SourceFormats, NodeImportsTheEsModule) {
   }
 }
 
-// `lutbake bake` writes every embedding and `lutbake check` holds each to
+// Bake writes every embedding and CheckBakedSet holds each to
 // its storage ("texture formats"); one literal moved by a float32 ulp fails;
 // an embedding alone is checked as the primary file.
 TEST(SourceFormats, CheckHoldsEachEmbeddingToItsStorage) {
   const fs::path d = test::Scratch("check_sources");
-  test::CommandResult run =
-      test::Lutbake("bake --out " + d.string() + " --tables E,Eavg,dfg --size 8 --tolerance 1e-6 " +
-                    "--format exr,inc-half,js,ts-half,glsl-array,hlsl-array,wgsl-array,msl-array");
-  ASSERT_EQ(run.status, 0) << run.output;
+  BakeRequest request = test::BakeRequestFor(d);
+  request.tables = {"E", "Eavg", "dfg"};
+  request.size = 8;
+  request.sampling.tolerance = 1e-6;
+  request.formats = {"exr",        "inc-half",   "js",         "ts-half",
+                     "glsl-array", "hlsl-array", "wgsl-array", "msl-array"};
+  Bake(request);
   CheckOptions quick;
   quick.randomPoints = 32;
   quick.furnaceGrid = 65;
@@ -203,9 +208,12 @@ TEST(SourceFormats, CheckHoldsEachEmbeddingToItsStorage) {
       << textures->detail;
   // An embedding alone.
   const fs::path alone = test::Scratch("check_sources_alone");
-  run = test::Lutbake("bake --out " + alone.string() +
-                      " --tables E,Eavg --size 8 --tolerance 1e-6 --format js-half");
-  ASSERT_EQ(run.status, 0) << run.output;
+  BakeRequest single = test::BakeRequestFor(alone);
+  single.tables = {"E", "Eavg"};
+  single.size = 8;
+  single.sampling.tolerance = 1e-6;
+  single.formats = {"js-half"};
+  Bake(single);
   r = CheckBakedSet(alone.string(), quick);
   EXPECT_TRUE(r.passed());
   fs::remove_all(d);

@@ -1,28 +1,34 @@
 // Bake plans: each rule of plan.h on the test scenes and manifests, the
 // narrowed and listed tables against the full tables and the quadrature,
-// and `lutbake plan` / `lutbake bake --scene` end to end.
+// and lutbake::Plan / lutbake::Bake with scenes and manifests end to end
+// (what `lutbake plan` and `lutbake bake --scene` call; their exit statuses
+// and messages are tests/cli/bake_cli_test.cpp).
 #include "lutbake/plans/plan.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "lutbake/formats/binary_format.h"
 #include "lutbake/formats/table_reader.h"
 #include "lutbake/formats/writer.h"
+#include "lutbake/lutbake.h"
 #include "lutbake/plans/manifest.h"
 #include "lutbake/plans/scene.h"
+#include "lutbake/validation/check.h"
+#include "support/bake_for_test.h"
 #include "support/cli_run.h"
 
 namespace lutbake {
 namespace {
 
 namespace fs = std::filesystem;
-using test::Lutbake;
 using test::Scratch;
 
 const std::string kPlans = std::string(LUTBAKE_TEST_DATA) + "/plans/";
@@ -420,12 +426,13 @@ TEST(PlanBake, ListedRowsMatchTheQuadratureWithinTheirBounds) {
   }
 }
 
-TEST(PlanCli, JsonHasTheDocumentedShape) {
-  const auto r = Lutbake("plan --json --scene " + kPlans + "listed.gltf " + kPlans +
-                             "unsupported.gltf --manifest " + kPlans + "no_ibl.json",
-                         true);
-  ASSERT_EQ(r.status, 0) << r.output;
-  const auto j = nlohmann::json::parse(r.output);
+// lutbake::Plan over scenes and a manifest, as `lutbake plan --json` and
+// `lutbake plan` print it (PlanJson, DescribePlan).
+TEST(Plan, JsonHasTheDocumentedShape) {
+  PlanRequest request;
+  request.scenes = {kPlans + "listed.gltf", kPlans + "unsupported.gltf"};
+  request.manifests = {kPlans + "no_ibl.json"};
+  const auto j = nlohmann::json::parse(PlanJson(Plan(request)));
   ASSERT_TRUE(j["tables"].is_array());
   // E, Eavg; sheen_E for unsupported.gltf's velvet (issue 14); glass_E and
   // glass_Eavg for its glass (issue 15).
@@ -460,21 +467,25 @@ TEST(PlanCli, JsonHasTheDocumentedShape) {
   EXPECT_EQ(paint["name"], "paint");
   EXPECT_NEAR(paint["Favg"][0].get<double>(), 0.04 * 20.0 / 21.0 + 1.0 / 21.0, 1e-16);
 
-  const auto human = Lutbake("plan --scene " + kPlans + "textured.gltf");
-  EXPECT_EQ(human.status, 0);
-  EXPECT_NE(human.output.find("perceptualRoughness linear [0, 0.5] (16 texels)"), std::string::npos)
-      << human.output;
-  EXPECT_NE(human.output.find("left out:"), std::string::npos);
+  PlanRequest textured;
+  textured.scenes = {kPlans + "textured.gltf"};
+  const std::string human = DescribePlan(Plan(textured));
+  EXPECT_NE(human.find("perceptualRoughness linear [0, 0.5] (16 texels)"), std::string::npos)
+      << human;
+  EXPECT_NE(human.find("left out:"), std::string::npos);
 }
 
-TEST(PlanCli, BakeWritesExactlyThePlanAndChecks) {
+TEST(PlanBake, WritesExactlyThePlanAndChecks) {
   const fs::path out = Scratch("plan_bake");
-  const auto r = Lutbake("bake --out " + out.string() + " --scene " + kPlans +
-                         "listed.glb --size 16 --samples 4096");
-  ASSERT_EQ(r.status, 0) << r.output;
+  BakeRequest request = test::BakeRequestFor(out);  // --scene listed.glb --size 16 --samples 4096
+  request.scenes = {kPlans + "listed.glb"};
+  request.size = 16;
+  request.sampling.samples = 4096;
+  Bake(request);
   EXPECT_EQ(test::FileNames(out),
             (std::vector<std::string>{"E.bin", "E.exr", "E.h", "Eavg.bin", "Eavg.exr", "Eavg.h",
-                                      "Favg.h", "dfg.bin", "dfg.exr", "dfg.h", "kulla_conty.h"}));
+                                      "Favg.h", "dfg.bin", "dfg.exr", "dfg.h", "kulla_conty.h",
+                                      "lutbake-set.json"}));
   const Table e = ReadExrTable((out / "E.exr").string());
   EXPECT_TRUE(e.y.listed());
   EXPECT_EQ(e.y.nodes, (std::vector<double>{0.25, 0.5}));
@@ -482,10 +493,16 @@ TEST(PlanCli, BakeWritesExactlyThePlanAndChecks) {
   EXPECT_EQ(*e.FindMetadata("planMaterials"), "paint, steel, steel copy");
   const Table bin = ReadBinaryTable((out / "dfg.bin").string());
   EXPECT_EQ(bin.y.nodes, (std::vector<double>{0.25, 0.5}));
-  // lutbake check reads the listed axes and passes the set.
-  const auto check = Lutbake("check " + out.string() + " --points 64 --furnace-grid 33");
-  EXPECT_EQ(check.status, 0) << check.output;
-  EXPECT_NE(check.output.find("closed form"), std::string::npos);
+  // CheckBakedSet reads the listed axes and passes the set (check --points 64
+  // --furnace-grid 33).
+  CheckOptions options;
+  options.randomPoints = 64;
+  options.furnaceGrid = 33;
+  const CheckReport check = CheckBakedSet(out.string(), options);
+  EXPECT_TRUE(check.passed()) << test::Describe(check);
+  EXPECT_TRUE(std::any_of(check.results.begin(), check.results.end(), [](const CheckResult &c) {
+    return c.check == "closed form";
+  })) << test::Describe(check);
 
   // The headers: lookups take the roughness a shader has; at a listed value
   // (as a float) they return that row exactly; Favg.h is the closed form.
@@ -521,11 +538,13 @@ TEST(PlanCli, BakeWritesExactlyThePlanAndChecks) {
 // Two manifests needing GGX, Beckmann and separable variants and both
 // exact Fresnel models: every variant is written under its own name, lutbake
 // check checks each set, and all headers compile together in one program.
-TEST(PlanCli, VariantsBakeCheckAndCompileTogether) {
+TEST(PlanBake, VariantsBakeCheckAndCompileTogether) {
   const fs::path out = Scratch("plan_variants");
-  const auto r = Lutbake("bake --out " + out.string() + " --manifest " + kPlans + "models.json " +
-                         kPlans + "dielectric.json --size 8 --tolerance 1e-5");
-  ASSERT_EQ(r.status, 0) << r.output;
+  BakeRequest request = test::BakeRequestFor(out);
+  request.manifests = {kPlans + "models.json", kPlans + "dielectric.json"};
+  request.size = 8;
+  request.sampling.tolerance = 1e-5;
+  Bake(request);
   std::string includes;
   size_t headers = 0;
   for (const auto &e : fs::directory_iterator(out))
@@ -535,10 +554,17 @@ TEST(PlanCli, VariantsBakeCheckAndCompileTogether) {
     }
   // 3 x (E, Eavg, dfg, kulla_conty) + Favg_dielectric + Favg_conductor
   EXPECT_EQ(headers, 14u);
-  const auto check = Lutbake("check " + out.string() + " --points 16 --furnace-grid 17");
-  EXPECT_EQ(check.status, 0) << check.output;
-  for (const char *subject : {"E_beckmann", "dfg_separable", "Favg_conductor", "E+Eavg_beckmann"})
-    EXPECT_NE(check.output.find(subject), std::string::npos) << subject << "\n" << check.output;
+  CheckOptions options;  // check --points 16 --furnace-grid 17
+  options.randomPoints = 16;
+  options.furnaceGrid = 17;
+  const CheckReport check = CheckBakedSet(out.string(), options);
+  EXPECT_TRUE(check.passed()) << test::Describe(check);
+  for (const std::string subject :
+       {"E_beckmann", "dfg_separable", "Favg_conductor", "E+Eavg_beckmann"})
+    EXPECT_TRUE(std::any_of(check.results.begin(), check.results.end(),
+                            [&](const CheckResult &c) { return c.subject == subject; }))
+        << subject << "\n"
+        << test::Describe(check);
   std::ofstream(out / "main.cpp")
       << includes
       << "int main() {\n"
@@ -555,78 +581,64 @@ TEST(PlanCli, VariantsBakeCheckAndCompileTogether) {
 // --tables with a scene selects among the planned tables (what
 // lutbake_add_luts(TABLES ... SCENE ...) passes), and a table the plan
 // leaves out stops the bake with the plan's reason and writes nothing.
-TEST(PlanCli, TablesSelectAmongThePlannedOnes) {
+TEST(PlanBake, TablesSelectAmongThePlannedOnes) {
   const fs::path out = Scratch("plan_tables");
-  const auto r = Lutbake("bake --out " + out.string() + " --scene " + kPlans +
-                         "listed.gltf --tables E,Eavg --format header --size 8 --samples 256");
-  ASSERT_EQ(r.status, 0) << r.output;
-  EXPECT_EQ(test::FileNames(out), (std::vector<std::string>{"E.h", "Eavg.h", "kulla_conty.h"}));
+  BakeRequest request = test::BakeRequestFor(out);
+  request.scenes = {kPlans + "listed.gltf"};
+  request.tables = {"E", "Eavg"};
+  request.formats = {"header"};
+  request.size = 8;
+  request.sampling.samples = 256;
+  Bake(request);
+  EXPECT_EQ(test::FileNames(out),
+            (std::vector<std::string>{"E.h", "Eavg.h", "kulla_conty.h", "lutbake-set.json"}));
   const HeaderValues e = ReadHeaderValues((out / "E.h").string());
   EXPECT_EQ(e.height, 2);  // the scene's two listed roughness values
   fs::remove_all(out);
 
-  const auto refused = Lutbake("bake --out " + out.string() + " --scene " + kPlans +
-                               "listed.gltf --no-ibl --tables E,dfg --size 8 --samples 256");
-  EXPECT_EQ(refused.status, 1) << refused.output;
-  EXPECT_NE(refused.output.find("  dfg: "), std::string::npos) << refused.output;
-  EXPECT_EQ(refused.output.find("  E: "), std::string::npos) << refused.output;
+  // --no-ibl --tables E,dfg: a runtime failure (exit status 1) naming dfg.
+  request.noIbl = true;
+  request.tables = {"E", "dfg"};
+  request.formats.reset();
+  const std::optional<Error> refused = test::BakeError(request);
+  ASSERT_TRUE(refused.has_value());
+  EXPECT_EQ(refused->kind(), Error::Kind::kRuntime) << refused->what();
+  const std::string message = refused->what();
+  EXPECT_NE(message.find("  dfg: "), std::string::npos) << message;
+  EXPECT_EQ(message.find("  E: "), std::string::npos) << message;
   EXPECT_FALSE(fs::exists(out));
 }
 
-TEST(PlanCli, UnsupportedStopsTheBakeUnlessSkipped) {
+TEST(PlanBake, UnsupportedStopsTheBakeUnlessSkipped) {
   const fs::path out = Scratch("plan_unsupported");
-  const auto stop = Lutbake("bake --out " + out.string() + " --scene " + kPlans +
-                            "unsupported.gltf --size 4 --samples 64");
-  EXPECT_EQ(stop.status, 1);
-  EXPECT_NE(stop.output.find("brushed: KHR_materials_anisotropy"), std::string::npos)
-      << stop.output;
+  BakeRequest request = test::BakeRequestFor(out);
+  request.scenes = {kPlans + "unsupported.gltf"};
+  request.size = 4;
+  request.sampling.samples = 64;
+  const std::optional<Error> stop = test::BakeError(request);
+  ASSERT_TRUE(stop.has_value());
+  EXPECT_EQ(stop->kind(), Error::Kind::kRuntime) << stop->what();  // exit status 1
+  EXPECT_NE(std::string(stop->what()).find("brushed: KHR_materials_anisotropy"), std::string::npos)
+      << stop->what();
   EXPECT_FALSE(fs::exists(out));
-  const auto skip =
-      Lutbake("bake --out " + out.string() + " --scene " + kPlans +
-              "unsupported.gltf --size 4 --samples 64 --skip-unsupported --format exr");
-  EXPECT_EQ(skip.status, 0) << skip.output;
+  request.skipUnsupported = true;
+  request.formats = {"exr"};
+  Bake(request);
   EXPECT_TRUE(fs::exists(out / "E.exr"));
   fs::remove_all(out);
 }
 
-TEST(PlanCli, NothingNeededBakesNothing) {
+// A plan that needs nothing: Bake says so (the command line prints "the plan
+// needs no tables", tests/cli/bake_cli_test.cpp) and creates nothing.
+TEST(PlanBake, NothingNeededBakesNothing) {
   const fs::path out = Scratch("plan_nothing");
-  const auto r = Lutbake("bake --out " + out.string() + " --scene " + kPlans + "unlit.gltf");
-  EXPECT_EQ(r.status, 0) << r.output;
-  EXPECT_NE(r.output.find("needs no tables"), std::string::npos) << r.output;
+  BakeRequest request = test::BakeRequestFor(out);
+  request.scenes = {kPlans + "unlit.gltf"};
+  const BakeResult result = Bake(request);
+  EXPECT_TRUE(result.planNeedsNothing);
+  EXPECT_FALSE(result.nothingToBake.empty());
+  EXPECT_TRUE(result.files.empty());
   EXPECT_FALSE(fs::exists(out));
-}
-
-TEST(PlanCli, BadInputExitsWithoutOutput) {
-  const fs::path out = Scratch("plan_bad");
-  const std::string bake = "bake --out " + out.string() + " ";
-  struct Case {
-    std::string args;
-    int status;
-    std::string says;
-  };
-  const Case cases[] = {
-      {"--scene " + kPlans + "missing.gltf", 2, "--scene " + kPlans + "missing.gltf: no such file"},
-      {"--manifest " + kPlans + "missing.json", 2, "no such file"},
-      {"--scene " + kPlans + "bad_roughness.gltf", 1,
-       "/materials/1/pbrMetallicRoughness/roughnessFactor: 7 is outside"},
-      {"--scene " + kPlans + "malformed.gltf", 1, "malformed JSON: parse error at line 3"},
-      {"--scene " + kPlans + "truncated.glb", 1, "truncated"},
-      {"--scene " + kPlans + "not_gltf.json", 1, "not a glTF file"},
-      {"--manifest " + kPlans + "bad_key.json", 1, "unknown key \"roughnes\""},
-      {"--scene " + kPlans + "listed.gltf --ndf beckmann", 2, "--ndf cannot be combined"},
-  };
-  for (const Case &c : cases) {
-    const auto r = Lutbake(bake + c.args);
-    EXPECT_EQ(r.status, c.status) << c.args << "\n" << r.output;
-    EXPECT_NE(r.output.find(c.says), std::string::npos) << c.args << "\n" << r.output;
-    EXPECT_FALSE(fs::exists(out)) << c.args;
-    const auto plan = Lutbake("plan " + c.args);
-    if (c.args.find("--tables") == std::string::npos && c.args.find("--ndf") == std::string::npos) {
-      EXPECT_EQ(plan.status, c.status) << c.args;
-    }
-  }
-  EXPECT_EQ(Lutbake("plan").status, 2);
 }
 
 }  // namespace

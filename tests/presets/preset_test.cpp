@@ -16,8 +16,10 @@
 #include "lutbake/integrators/dielectric_quadrature.h"
 #include "lutbake/integrators/furnace.h"
 #include "lutbake/integrators/gauss_legendre.h"
+#include "lutbake/lutbake.h"
 #include "lutbake/models/sheen.h"
 #include "lutbake/tables/storage.h"
+#include "support/bake_for_test.h"
 #include "support/cli_run.h"
 #include "support/csv.h"
 
@@ -38,13 +40,33 @@ double Median(std::vector<double> v) {
   return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
+// `lutbake bake --preset NAME [--files FILES] --out dir`.
+void BakePreset(const std::string &name, const std::filesystem::path &dir,
+                const std::vector<std::string> &files = {}) {
+  BakeRequest request = test::BakeRequestFor(dir);
+  request.preset = name;
+  if (!files.empty()) request.presetFiles = files;
+  Bake(request);
+}
+
+// One file's line of a preset check (`lutbake check DIR` prints "pass FILE"
+// or "FAIL FILE"), or null if the check did not read that file.
+const PresetFileCheck *FileCheck(const PresetCheck &check, const std::string &file) {
+  for (const PresetFileCheck &f : check.files)
+    if (f.file == file) return &f;
+  return nullptr;
+}
+
 TEST(Presets, EveryEngineOfTheIssueIsListed) {
   for (const char *name : {"filament", "unreal", "unity-hdrp", "godot", "threejs",
                            "gltf-sample-renderer", "learnopengl", "eevee", "cycles"})
     EXPECT_NE(FindPreset(name), nullptr) << name;
-  const auto listed = test::Lutbake("presets");
-  EXPECT_EQ(listed.status, 0);
-  for (const Preset *p : AllPresets()) EXPECT_NE(listed.output.find(p->name), std::string::npos);
+  // The listing (`lutbake presets --json`) names every preset.
+  const nlohmann::json listed = nlohmann::json::parse(PresetListJson());
+  std::vector<std::string> names;
+  for (const auto &p : listed["presets"]) names.push_back(p["name"]);
+  for (const Preset *p : AllPresets())
+    EXPECT_NE(std::find(names.begin(), names.end(), p->name), names.end()) << p->name;
 }
 
 // Cycles' table_ggx_E (2^23 samples, 6 decimals) at its own edge texels, and
@@ -197,13 +219,11 @@ TEST(Presets, CyclesGlassAveragesAtCyclesTexels) {
 }
 
 // preset.json of a glass table (3D: depth, the z axis and its IOR mapping),
-// written with --files, and `check` reading it back. (The inside table's
+// written with --files, and CheckPresetDirectory (`check`) reading it back. (The inside table's
 // axis is the same with quantity 1/eta, CyclesGlassAlbedoAtCyclesTexels.)
 TEST(Presets, CyclesGlassPresetJsonAndCheck) {
   const auto dir = test::Scratch("preset_cycles_glass");
-  const auto baked =
-      test::Lutbake("bake --preset cycles --files table_ggx_glass_E.h --out " + dir.string());
-  ASSERT_EQ(baked.status, 0) << baked.output;
+  BakePreset("cycles", dir, {"table_ggx_glass_E.h"});
   std::ifstream in(dir / "preset.json");
   const nlohmann::json manifest = nlohmann::json::parse(in);
   ASSERT_EQ(manifest["files"].size(), 1u);
@@ -230,10 +250,12 @@ TEST(Presets, CyclesGlassPresetJsonAndCheck) {
   EXPECT_LT(f["errorMax"].get<double>(), 6e-8);
   const Table read = ReadSourceTable((dir / "table_ggx_glass_E.h").string());
   EXPECT_EQ(read.values.size(), 4096u);
-  const auto checked = test::Lutbake("check " + dir.string());
-  EXPECT_EQ(checked.status, 0) << checked.output;
-  EXPECT_NE(checked.output.find("pass table_ggx_glass_E.h"), std::string::npos) << checked.output;
-  EXPECT_EQ(checked.output.find("table_ggx_E.h"), std::string::npos) << checked.output;
+  const PresetCheck checked = CheckPresetDirectory(dir.string());
+  EXPECT_TRUE(checked.pass) << checked.json;
+  const PresetFileCheck *glass = FileCheck(checked, "table_ggx_glass_E.h");
+  ASSERT_NE(glass, nullptr) << checked.json;
+  EXPECT_TRUE(glass->pass) << checked.json;
+  EXPECT_EQ(FileCheck(checked, "table_ggx_E.h"), nullptr) << checked.json;
 }
 
 // three.js's 32 x 32 table (r181, 4096 samples): the transposed layout
@@ -471,12 +493,11 @@ TEST(Presets, EeveeLayoutMatchesBlendersTable) {
   EXPECT_GT(Median(biasTransposed), 1e-2);
 }
 
-// The CLI: the files, and preset.json describing them well enough to read
-// the file without knowing the preset.
+// A preset bake: the files, and preset.json describing them well enough to
+// read the file without knowing the preset.
 TEST(Presets, BakeWritesFilesAndPresetJsonThatDescribesThem) {
   const auto dir = test::Scratch("preset_unreal");
-  const auto run = test::Lutbake("bake --preset unreal --out " + dir.string());
-  ASSERT_EQ(run.status, 0) << run.output;
+  BakePreset("unreal", dir);
   std::ifstream in(dir / "preset.json");
   const nlohmann::json manifest = nlohmann::json::parse(in);
   EXPECT_EQ(manifest["preset"], "unreal");
@@ -507,20 +528,6 @@ TEST(Presets, BakeWritesFilesAndPresetJsonThatDescribesThem) {
         ASSERT_LE(std::abs(pixels[(static_cast<size_t>(y) * 128 + x) * spec.nchannels + c] -
                            exact.value(x, y, c)),
                   errorMax + 1e-7);
-}
-
-TEST(Presets, OptionsAPresetFixesAreRefused) {
-  const auto dir = test::Scratch("preset_refused");
-  for (const char *extra : {"--tables dfg", "--format exr", "--size 64", "--smith separable"}) {
-    const auto run =
-        test::Lutbake("bake --preset godot --out " + dir.string() + " " + std::string(extra));
-    EXPECT_EQ(run.status, 2) << extra;
-    EXPECT_NE(run.output.find("cannot be combined with --preset"), std::string::npos) << extra;
-  }
-  const auto unknown = test::Lutbake("bake --preset unity --out " + dir.string());
-  EXPECT_EQ(unknown.status, 2);
-  EXPECT_NE(unknown.output.find("unity-hdrp"), std::string::npos);
-  EXPECT_FALSE(std::filesystem::exists(dir / "preset.json"));
 }
 
 // HDRP's Charlie + fabric texture: x = B / 2 pi, y = E / 2 pi against a
@@ -555,8 +562,8 @@ TEST(Presets, HdrpCharlieMatchesBruteForce) {
     }
 }
 
-// Every preset's files read back by `lutbake check` against the preset
-// integrated again; a tampered value fails it.
+// Every preset's files read back by CheckPresetDirectory (`lutbake check`)
+// against the preset integrated again; a tampered value fails it.
 TEST(Presets, CheckReadsEveryPresetDirectoryBack) {
   // unity-hdrp is left out: its Charlie texture takes ~35 s to integrate
   // (twice here); HdrpCharlieMatchesBruteForce holds its values.
@@ -565,19 +572,19 @@ TEST(Presets, CheckReadsEveryPresetDirectoryBack) {
     const auto dir = test::Scratch(std::string("preset_check_") + name);
     // Cycles' glass averages take minutes: its 2D tables here, its glass
     // tables in CyclesGlassPresetJsonAndCheck.
-    const std::string files =
-        std::string(name) == "cycles" ? " --files table_ggx_E.h,table_ggx_Eavg.h" : "";
-    ASSERT_EQ(test::Lutbake("bake --preset " + std::string(name) + files + " --out " + dir.string())
-                  .status,
-              0);
-    const auto checked = test::Lutbake("check " + dir.string());
-    EXPECT_EQ(checked.status, 0) << name << "\n" << checked.output;
-    EXPECT_EQ(checked.output.find("FAIL"), std::string::npos) << checked.output;
+    const std::vector<std::string> files =
+        std::string(name) == "cycles"
+            ? std::vector<std::string>{"table_ggx_E.h", "table_ggx_Eavg.h"}
+            : std::vector<std::string>{};
+    BakePreset(name, dir, files);
+    const PresetCheck checked = CheckPresetDirectory(dir.string());
+    EXPECT_TRUE(checked.pass) << name << "\n" << checked.json;
+    for (const PresetFileCheck &f : checked.files)
+      EXPECT_TRUE(f.pass) << f.file << ": " << f.problem;
   }
   // Tamper with Cycles' E: one literal changed in its last digits.
   const auto dir = test::Scratch("preset_check_cycles_tampered");
-  ASSERT_EQ(
-      test::Lutbake("bake --preset cycles --files table_ggx_E.h --out " + dir.string()).status, 0);
+  BakePreset("cycles", dir, {"table_ggx_E.h"});
   const auto path = dir / "table_ggx_E.h";
   std::ifstream in(path);
   std::string text((std::istreambuf_iterator<char>(in)), {});
@@ -586,16 +593,18 @@ TEST(Presets, CheckReadsEveryPresetDirectoryBack) {
   ASSERT_NE(at, std::string::npos);
   text.replace(at, 8, "0.980504");
   std::ofstream(path) << text;
-  const auto tampered = test::Lutbake("check " + dir.string());
-  EXPECT_EQ(tampered.status, 1) << tampered.output;
-  EXPECT_NE(tampered.output.find("FAIL table_ggx_E.h"), std::string::npos) << tampered.output;
+  const PresetCheck tampered = CheckPresetDirectory(dir.string());
+  EXPECT_FALSE(tampered.pass) << tampered.json;
+  const PresetFileCheck *e = FileCheck(tampered, "table_ggx_E.h");
+  ASSERT_NE(e, nullptr) << tampered.json;
+  EXPECT_FALSE(e->pass) << tampered.json;
 }
 
 // three.js's module: its own API (getDFGLUT over a DataTexture of halves)
 // and the halves of the exact values.
 TEST(Presets, ThreejsModuleIsThreejsFile) {
   const auto dir = test::Scratch("preset_threejs_module");
-  ASSERT_EQ(test::Lutbake("bake --preset threejs --out " + dir.string()).status, 0);
+  BakePreset("threejs", dir);
   std::ifstream in(dir / "DFGLUTData.js");
   const std::string text((std::istreambuf_iterator<char>(in)), {});
   EXPECT_NE(text.find("export function getDFGLUT()"), std::string::npos);

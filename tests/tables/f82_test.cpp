@@ -3,29 +3,29 @@
 // here (its own GGX, Beckmann and Smith formulas), the mirror's closed form,
 // the bounds 0 <= C <= B / 4 and C <= 6^6/7^7 E, the panel quadrature against
 // the adaptive reference, the sampled estimators within their bounds, and
-// eval, bake, check and the header through the command line.
+// bake, check and the header through the library (lutbake::Bake,
+// CheckBakedSet); eval's options for these tables are tests/cli/eval_tables_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "lutbake/formats/binary_format.h"
 #include "lutbake/integrators/fresnel_average.h"
 #include "lutbake/integrators/gauss_legendre.h"
+#include "lutbake/lutbake.h"
 #include "lutbake/tables/bake.h"
 #include "lutbake/tables/lookup.h"
-#include "support/check_json.h"
+#include "support/bake_for_test.h"
 #include "support/cli_run.h"
 
 namespace lutbake {
 namespace {
 
 namespace fs = std::filesystem;
-using test::Lutbake;
 
 constexpr double kPiHere = 3.14159265358979323846;
 // The maximum of (o.h) (1 - o.h)^6, at o.h = 1/7: 6^6 / 7^7.
@@ -226,15 +226,27 @@ TEST(F82Table, SampledBakeIsWithinItsBounds) {
   }
 }
 
-// A bake of f82 and dfg in every format, checked by `lutbake check`; eval at
+// Evaluation as `lutbake eval` does it with no sampling option: the
+// settings' defaults through ApplySampling (the quadrature).
+BakeSettings EvalSettings(BakeSettings settings = {}) {
+  ApplySampling(SamplingRequest{}, &settings);
+  return settings;
+}
+
+// A bake of f82 and dfg in every format, checked by CheckBakedSet; eval at
 // a texel centre is the texel; the bake is the same for 1 and 2 threads.
-TEST(F82Table, BakeEvalAndCheckThroughTheCommandLine) {
+TEST(F82Table, BakeEvalAndCheck) {
   const fs::path out = test::Scratch("f82_bake"), one = test::Scratch("f82_bake_one");
-  ASSERT_EQ(
-      Lutbake("bake --out " + out.string() + " --tables f82,dfg,E --size 16 --error-map").status,
-      0);
-  ASSERT_EQ(Lutbake("bake --out " + one.string() + " --tables f82 --size 16 --threads 1").status,
-            0);
+  BakeRequest request = test::BakeRequestFor(out);  // --tables f82,dfg,E --size 16 --error-map
+  request.tables = {"f82", "dfg", "E"};
+  request.size = 16;
+  request.errorMaps = true;
+  Bake(request);
+  BakeRequest single = test::BakeRequestFor(one);  // --tables f82 --size 16 --threads 1
+  single.tables = {"f82"};
+  single.size = 16;
+  single.threads = 1;
+  Bake(single);
   for (const char *file : {"f82.exr", "f82.bin", "f82.h", "f82.err.exr"})
     EXPECT_TRUE(fs::exists(out / file)) << file;
   const Table t = ReadBinaryTable((out / "f82.bin").string());
@@ -246,18 +258,15 @@ TEST(F82Table, BakeEvalAndCheckThroughTheCommandLine) {
     EXPECT_LE(t.errors[i], 4e-8) << i;  // float32-exact: 1e-8 plus the rounding
     EXPECT_LE(t.values[i], 0.25 * dfg.values[2 * i + 1] + t.errors[i] + dfg.errors[2 * i + 1]);
   }
-  // Texel (3, 5): mu = 3.5 / 16, r = 5.5 / 16.
-  const test::CommandResult eval =
-      Lutbake("eval --table f82 --mu 0.21875 --roughness 0.34375 --json", true);
-  ASSERT_EQ(eval.status, 0) << eval.output;
-  const nlohmann::json j = nlohmann::json::parse(eval.output);
-  EXPECT_EQ(static_cast<float>(double(j["value"])), t.values[t.index(3, 5, 0)]);
-  EXPECT_EQ(Lutbake("eval --table f82 --mu 0.5 --roughness 0.5 --eta 1.5").status, 2);
-  const test::CommandResult check = Lutbake("check " + out.string() + " --json", true);
-  EXPECT_EQ(check.status, 0) << check.output;
-  std::map<std::string, std::string> status = test::CheckStatuses(check.output);
+  // Texel (3, 5): mu = 3.5 / 16, r = 5.5 / 16 (eval --table f82 --mu 0.21875
+  // --roughness 0.34375).
+  const PointValue eval = TableNamed("f82").Evaluate(EvalSettings(), 0.21875, 0.34375);
+  EXPECT_EQ(static_cast<float>(eval.value[0]), t.values[t.index(3, 5, 0)]);
+  const CheckReport check = CheckBakedSet(out.string());
+  EXPECT_TRUE(check.passed()) << test::Describe(check);
+  std::map<std::string, std::string> status = test::CheckStatuses(check);
   for (const char *expected : {"f82 range", "f82 texels", "f82 points", "f82+dfg at most"})
-    EXPECT_EQ(status[expected], "pass") << expected << "\n" << check.output;
+    EXPECT_EQ(status[expected], "pass") << expected << "\n" << test::Describe(check);
   fs::remove_all(out);
   fs::remove_all(one);
 }
@@ -266,7 +275,10 @@ TEST(F82Table, BakeEvalAndCheckThroughTheCommandLine) {
 // and run with both compilers.
 TEST(F82Table, HeaderHelpersAreTheSplitSumWithTheF82Term) {
   const fs::path out = test::Scratch("f82_header");
-  ASSERT_EQ(Lutbake("bake --out " + out.string() + " --tables f82 --size 8").status, 0);
+  BakeRequest request = test::BakeRequestFor(out);  // --tables f82 --size 8
+  request.tables = {"f82"};
+  request.size = 8;
+  Bake(request);
   const fs::path program = out / "albedo.cpp";
   std::ofstream(program) << "#include <cstdio>\n#include \"f82.h\"\n"
                             "int main() {\n"
@@ -331,24 +343,24 @@ TEST(F82Favg, ClosedFormMatchesNumericIntegration) {
 
 TEST(F82Favg, BakeEvalAndCheck) {
   const fs::path out = test::Scratch("f82_favg");
-  ASSERT_EQ(Lutbake("bake --out " + out.string() + " --tables Favg --fresnel f82 --size 8").status,
-            0);
+  BakeRequest request = test::BakeRequestFor(out);  // --tables Favg --fresnel f82 --size 8
+  request.tables = {"Favg"};
+  request.fresnel = FresnelModel::kF82;
+  request.size = 8;
+  Bake(request);
   const Table t = ReadBinaryTable((out / "Favg.bin").string());
   EXPECT_EQ(t.x.name, "F0");
   EXPECT_EQ(t.y.name, "tint");
   EXPECT_EQ(*t.FindMetadata("fresnel"), "f82");
   const double f0 = t.x.TexelCenter(2), tint = t.y.TexelCenter(5);
   EXPECT_EQ(t.values[t.index(2, 5, 0)], static_cast<float>(F82TintFresnelAverage(f0, tint).value));
-  const test::CommandResult eval =
-      Lutbake("eval --table Favg --fresnel f82 --f0 0.9 --tint 0.6 --json", true);
-  ASSERT_EQ(eval.status, 0) << eval.output;
-  const nlohmann::json j = nlohmann::json::parse(eval.output);
-  EXPECT_EQ(double(j["value"]), F82TintFresnelAverage(0.9, 0.6).value);
-  EXPECT_EQ(double(j["tint"]), 0.6);
-  EXPECT_EQ(Lutbake("eval --table Favg --fresnel f82 --f0 0.9").status, 2);  // needs --tint
-  EXPECT_EQ(Lutbake("eval --table Favg --fresnel schlick --f0 0.9 --tint 0.5").status, 2);
-  const test::CommandResult check = Lutbake("check " + out.string());
-  EXPECT_EQ(check.status, 0) << check.output;
+  // eval --table Favg --fresnel f82 --f0 0.9 --tint 0.6
+  BakeSettings f82;
+  f82.fresnel = FresnelModel::kF82;
+  EXPECT_EQ(TableNamed("Favg").Evaluate(EvalSettings(f82), 0.9, 0.6).value[0],
+            F82TintFresnelAverage(0.9, 0.6).value);
+  const CheckReport check = CheckBakedSet(out.string());
+  EXPECT_TRUE(check.passed()) << test::Describe(check);
   fs::remove_all(out);
 }
 
@@ -357,13 +369,15 @@ TEST(F82Favg, BakeEvalAndCheck) {
 // dfg and f82 share their axes here.
 TEST(F82Table, ManifestMetalsArePlannedBakedAndChecked) {
   const fs::path out = test::Scratch("f82_manifest");
-  const test::CommandResult bake =
-      Lutbake("bake --out " + out.string() +
-              " --manifest " LUTBAKE_TEST_DATA
-              "/plans/f82.json --tables f82,dfg,Favg --size 8 --format bin");
-  ASSERT_EQ(bake.status, 0) << bake.output;
-  EXPECT_EQ(test::FileNames(out), (std::vector<std::string>{"Favg_dielectric.bin", "Favg_f82.bin",
-                                                            "dfg.bin", "f82.bin"}));
+  BakeRequest request = test::BakeRequestFor(out);
+  request.manifests = {LUTBAKE_TEST_DATA "/plans/f82.json"};  // --manifest
+  request.tables = {"f82", "dfg", "Favg"};
+  request.size = 8;
+  request.formats = {"bin"};
+  Bake(request);
+  EXPECT_EQ(test::FileNames(out),
+            (std::vector<std::string>{"Favg_dielectric.bin", "Favg_f82.bin", "dfg.bin", "f82.bin",
+                                      "lutbake-set.json"}));
   const Table c = ReadBinaryTable((out / "f82.bin").string());
   EXPECT_EQ(c.x.count, 8);
   EXPECT_EQ(c.y.nodes, (std::vector<double>{0.1, 0.25, 0.3}));
@@ -380,11 +394,11 @@ TEST(F82Table, ManifestMetalsArePlannedBakedAndChecked) {
       EXPECT_EQ(
           favg.values[favg.index(x, y, 0)],
           static_cast<float>(F82TintFresnelAverage(favg.x.nodes[x], favg.y.TexelCenter(y)).value));
-  const test::CommandResult check = Lutbake("check " + out.string() + " --json", true);
-  EXPECT_EQ(check.status, 0) << check.output;
-  std::map<std::string, std::string> status = test::CheckStatuses(check.output);
+  const CheckReport check = CheckBakedSet(out.string());
+  EXPECT_TRUE(check.passed()) << test::Describe(check);
+  std::map<std::string, std::string> status = test::CheckStatuses(check);
   for (const char *expected : {"f82 texels", "f82+dfg at most", "Favg_f82 closed form"})
-    EXPECT_EQ(status[expected], "pass") << expected << "\n" << check.output;
+    EXPECT_EQ(status[expected], "pass") << expected << "\n" << test::Describe(check);
   fs::remove_all(out);
 }
 

@@ -2,14 +2,16 @@
 // oren_nayar_full_E: the full model): values against the independent numpy
 // furnace reference (tests/data/furnace), the default rule against check's
 // reference (a different integral: the BRDF over (theta_i, dphi), not the
-// closed-form azimuth), the Lambert limit, and eval, bake and check through
-// the command line.
+// closed-form azimuth), the Lambert limit, and bake and check through the
+// library (eval's options for these tables: tests/cli/eval_tables_test.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 
+#include "lutbake/lutbake.h"
 #include "lutbake/tables/table_definition.h"
+#include "support/bake_for_test.h"
 #include "support/cli_run.h"
 #include "support/csv.h"
 
@@ -17,7 +19,6 @@ namespace lutbake {
 namespace {
 
 namespace fs = std::filesystem;
-using test::Lutbake;
 
 BakeSettings WithEstimator(Estimator e) {
   BakeSettings s;
@@ -70,29 +71,19 @@ TEST(OrenNayarTables, SigmaZeroIsLambert) {
     }
 }
 
-TEST(OrenNayarTables, EvalBakeAndCheck) {
-  test::CommandResult eval = Lutbake("eval --table oren_nayar_E --mu 0.5 --sigma 1 --json", true);
-  ASSERT_EQ(eval.status, 0) << eval.output;
-  EXPECT_NE(eval.output.find("\"sigma\":1"), std::string::npos) << eval.output;
-  // Out of range, and an option the table does not take.
-  eval = Lutbake("eval --table oren_nayar_E --mu 0.5 --sigma 1.6");
-  EXPECT_EQ(eval.status, 2);
-  EXPECT_NE(eval.output.find("[0, pi/2]"), std::string::npos) << eval.output;
-  eval = Lutbake("eval --table oren_nayar_E --mu 0.5 --roughness 0.5");
-  EXPECT_EQ(eval.status, 2) << eval.output;
-  eval = Lutbake("eval --table E --mu 0.5 --sigma 0.5 --roughness 0.5");
-  EXPECT_EQ(eval.status, 2) << eval.output;
-
+TEST(OrenNayarTables, BakeAndCheck) {
   const fs::path dir = test::Scratch("oren_nayar_bake");
-  const test::CommandResult bake = Lutbake("bake --out " + dir.string() +
-                                           " --tables oren_nayar_E,oren_nayar_full_E --size 8 "
-                                           "--format exr,bin,header");
-  ASSERT_EQ(bake.status, 0) << bake.output;
-  const test::CommandResult check = Lutbake("check " + dir.string());
-  EXPECT_EQ(check.status, 0) << check.output;
+  BakeRequest request = test::BakeRequestFor(dir);
+  request.tables = {"oren_nayar_E", "oren_nayar_full_E"};
+  request.size = 8;
+  request.formats = {"exr", "bin", "header"};
+  Bake(request);
+  const CheckReport check = CheckBakedSet(dir.string());
+  EXPECT_TRUE(check.passed()) << test::Describe(check);
+  const std::map<std::string, std::string> status = test::CheckStatuses(check);
   for (const char *claim : {"oren_nayar_E texels", "oren_nayar_full_E texels", "oren_nayar_E limit",
                             "oren_nayar_full_E limit"})
-    EXPECT_NE(check.output.find(claim), std::string::npos) << claim << "\n" << check.output;
+    EXPECT_EQ(status.count(claim), 1u) << claim << "\n" << test::Describe(check);
   fs::remove_all(dir);
 }
 

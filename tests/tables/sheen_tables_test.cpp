@@ -1,10 +1,11 @@
 // The sheen tables (sheen_E, sheen_Eavg) through the table definitions and
-// the command line: eval against the independent reference values of
-// tests/data/sheen (another program, another parameterisation) for both
-// visibilities and both roughness mappings, within the stated bound; the
-// limits; a default bake checked by `lutbake check`; a glTF scene with
-// KHR_materials_sheen planned and baked; the header's albedo-scaling helper
-// compiled and run.
+// the library: evaluation (as `lutbake eval` does it) against the
+// independent reference values of tests/data/sheen (another program, another
+// parameterisation) for both visibilities and both roughness mappings,
+// within the stated bound; the limits; a default bake checked by
+// CheckBakedSet; a glTF scene with KHR_materials_sheen planned and baked;
+// the header's albedo-scaling helper compiled and run. What eval refuses is
+// tests/cli/eval_tables_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,13 +13,13 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "lutbake/formats/binary_format.h"
 #include "lutbake/formats/table_reader.h"
+#include "lutbake/lutbake.h"
 #include "lutbake/tables/bake.h"
 #include "lutbake/tables/lookup.h"
-#include "support/check_json.h"
+#include "support/bake_for_test.h"
 #include "support/cli_run.h"
 #include "support/csv.h"
 
@@ -26,7 +27,6 @@ namespace lutbake {
 namespace {
 
 namespace fs = std::filesystem;
-using test::Lutbake;
 
 const std::string kData = LUTBAKE_TEST_DATA;
 
@@ -37,12 +37,14 @@ BakeSettings Sheen(SheenVisibility v, SheenAlpha a = SheenAlpha::kLinear) {
   return s;
 }
 
-std::vector<nlohmann::json> JsonLines(const std::string &text) {
-  std::vector<nlohmann::json> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty()) lines.push_back(nlohmann::json::parse(line));
-  return lines;
+// The settings `lutbake eval --sheen-visibility V --sheen-alpha A` evaluates
+// with: no sampling option, so the quadrature (ApplySampling's default).
+BakeSettings EvalSettings(const std::string &visibility, SheenAlpha alpha = SheenAlpha::kLinear) {
+  SheenVisibility v = SheenVisibility::kCharlie;
+  EXPECT_TRUE(ParseSheenVisibility(visibility, &v)) << visibility;
+  BakeSettings s = Sheen(v, alpha);
+  ApplySampling(SamplingRequest{}, &s);
+  return s;
 }
 
 TEST(SheenTables, AreDefinedAndRegistered) {
@@ -101,7 +103,7 @@ TEST(SheenTables, Limits) {
 }
 
 // Every point of the independent reference (tests/data/sheen, alpha given)
-// through `lutbake eval` with each mapping: alpha = r (r = alpha) and
+// evaluated as `lutbake eval` does with each mapping: alpha = r (r = alpha) and
 // alpha = r^2 (r = sqrt(alpha), where the square returns alpha exactly);
 // |value - reference| within the stated bound plus the reference's error.
 TEST(SheenTables, EvalMatchesTheIndependentReference) {
@@ -124,18 +126,11 @@ TEST(SheenTables, EvalMatchesTheIndependentReference) {
       const bool squared = std::string(mapping) == "squared";
       const double r = squared ? std::sqrt(alpha) : alpha;
       if (squared && r * r != alpha) continue;  // not exactly representable
-      std::string mus;
-      for (double mu : g.mu) mus += (mus.empty() ? "" : ",") + FormatDouble(mu);
-      const test::CommandResult run =
-          Lutbake("eval --table sheen_E --mu " + mus + " --roughness " + FormatDouble(r) +
-                      " --sheen-visibility " + visibility + " --sheen-alpha " + mapping + " --json",
-                  true);
-      ASSERT_EQ(run.status, 0) << visibility << " " << alpha << "\n" << run.output;
-      const std::vector<nlohmann::json> lines = JsonLines(run.output);
-      ASSERT_EQ(lines.size(), g.mu.size());
-      for (size_t i = 0; i < lines.size(); ++i) {
-        const double v = lines[i]["value"], bound = lines[i]["error"];
-        ASSERT_EQ(double(lines[i]["mu"]), g.mu[i]);
+      const BakeSettings settings =
+          EvalSettings(visibility, squared ? SheenAlpha::kSquared : SheenAlpha::kLinear);
+      for (size_t i = 0; i < g.mu.size(); ++i) {
+        const PointValue p = TableNamed("sheen_E").Evaluate(settings, g.mu[i], r);
+        const double v = p.value[0], bound = p.error[0];
         EXPECT_LE(std::abs(v - g.ref[i]), bound + g.err[i])
             << visibility << " alpha " << alpha << " mu " << g.mu[i] << " " << mapping;
         if (bound > 0) worstRatio = std::max(worstRatio, std::abs(v - g.ref[i]) / bound);
@@ -152,38 +147,12 @@ TEST(SheenTables, EvalOfTheAverageMatchesTheIndependentReference) {
   for (const test::CsvRow &row : test::ReadCsv(kData + "/sheen/sheen_Eavg.csv")) {
     const std::string visibility = row.Text("visibility");
     const double alpha = row.Number("alpha"), ref = row.Number("Eavg"), err = row.Number("error");
-    const test::CommandResult run =
-        Lutbake("eval --table sheen_Eavg --roughness " + FormatDouble(alpha) +
-                    " --sheen-visibility " + visibility + " --json",
-                true);
-    ASSERT_EQ(run.status, 0) << run.output;
-    const nlohmann::json p = nlohmann::json::parse(run.output);
-    EXPECT_LE(std::abs(double(p["value"]) - ref), double(p["error"]) + err)
-        << visibility << " alpha " << alpha;
+    // eval --table sheen_Eavg --roughness alpha: sheen_Eavg's one coordinate.
+    const PointValue p = TableNamed("sheen_Eavg").Evaluate(EvalSettings(visibility), alpha, 0.0);
+    EXPECT_LE(std::abs(p.value[0] - ref), p.error[0] + err) << visibility << " alpha " << alpha;
     ++compared;
   }
   EXPECT_GE(compared, 10u);
-}
-
-TEST(SheenTables, EvalRefusesWhatHasNoFiniteValueOrDoesNotApply) {
-  struct Bad {
-    std::string args, mentions;
-  };
-  for (const Bad &bad : std::vector<Bad>{
-           {"--table sheen_E --mu 0 --roughness 0.5", "infinite at mu = 0"},
-           {"--table sheen_E --mu 0 --roughness 0 --sheen-visibility ashikhmin", "infinite"},
-           {"--table sheen_E --mu 0.5 --roughness 1.5", "[0, 1]"},
-           {"--table sheen_E --mu 0.5 --roughness 0.5 --ndf beckmann", "--ndf does not apply"},
-           {"--table E --mu 0.5 --roughness 0.5 --sheen-visibility ashikhmin",
-            "--sheen-visibility does not apply"},
-           {"--table sheen_E --mu 0.5 --roughness 0.5 --estimator cosine", "no cosine"},
-           {"--table sheen_Eavg --mu 0.5 --roughness 0.5", "--mu does not apply"},
-           {"--table sheen_E --mu 0.5 --roughness 0.5 --sheen-alpha cubed", "linear"},
-       }) {
-    const test::CommandResult run = Lutbake("eval " + bad.args);
-    EXPECT_EQ(run.status, 2) << bad.args << "\n" << run.output;
-    EXPECT_NE(run.output.find(bad.mentions), std::string::npos) << bad.args << "\n" << run.output;
-  }
 }
 
 // A sampled sheen texel reproduces through eval at its centre, and the
@@ -210,14 +179,15 @@ TEST(SheenTables, SampledBakeIsWithinItsBounds) {
   EXPECT_LE(outside, 3);
 }
 
-// A default bake of both sheen tables, every format, checked by `lutbake
-// check` (range, texels against the half-vector reference, points, sheen_Eavg
+// A default bake of both sheen tables, every format, checked by
+// CheckBakedSet (range, texels against the half-vector reference, points, sheen_Eavg
 // against sheen_E's rows, the albedo-scaling furnace).
 TEST(SheenTables, DefaultBakePassesCheck) {
   const fs::path out = test::Scratch("sheen_default");
-  const test::CommandResult bake =
-      Lutbake("bake --out " + out.string() + " --tables sheen_E,sheen_Eavg --error-map");
-  ASSERT_EQ(bake.status, 0) << bake.output;
+  BakeRequest request = test::BakeRequestFor(out);  // --tables sheen_E,sheen_Eavg --error-map
+  request.tables = {"sheen_E", "sheen_Eavg"};
+  request.errorMaps = true;
+  Bake(request);
   for (const char *file : {"sheen_E.exr", "sheen_E.bin", "sheen_E.h", "sheen_E.err.exr",
                            "sheen_Eavg.exr", "sheen_Eavg.bin", "sheen_Eavg.h"})
     EXPECT_TRUE(fs::exists(out / file)) << file;
@@ -233,9 +203,9 @@ TEST(SheenTables, DefaultBakePassesCheck) {
     const double halfUlp = v > 0.0 ? std::ldexp(1.0, std::ilogb(v) - 24) : 0.0;
     EXPECT_LE(t.errors[i], (1e-8 * std::max(1.0, std::abs(v)) + halfUlp) * (1.0 + 1e-6)) << i;
   }
-  const test::CommandResult check = Lutbake("check " + out.string() + " --json", true);
-  EXPECT_EQ(check.status, 0) << check.output;
-  std::map<std::string, std::string> status = test::CheckStatuses(check.output);
+  const CheckReport check = CheckBakedSet(out.string());
+  EXPECT_TRUE(check.passed()) << test::Describe(check);
+  std::map<std::string, std::string> status = test::CheckStatuses(check);
   for (const char *expected :
        {"sheen_E range", "sheen_E texels", "sheen_E points", "sheen_E furnace", "sheen_Eavg range",
         "sheen_Eavg texels", "sheen_E+sheen_Eavg average"})
@@ -249,29 +219,32 @@ TEST(SheenTables, DefaultBakePassesCheck) {
 TEST(SheenTables, SceneWithSheenIsPlannedAndBaked) {
   const fs::path out = test::Scratch("sheen_scene");
   const std::string scene = kData + "/plans/sheen.gltf";
-  const test::CommandResult plan = Lutbake("plan --scene " + scene + " --json", true);
-  ASSERT_EQ(plan.status, 0) << plan.output;
-  const nlohmann::json j = nlohmann::json::parse(plan.output);
+  PlanRequest planRequest;  // plan --scene SCENE --json
+  planRequest.scenes = {scene};
+  const std::string plan = PlanJson(Plan(planRequest));
+  const nlohmann::json j = nlohmann::json::parse(plan);
   const nlohmann::json *sheen = nullptr;
   for (const auto &t : j["tables"])
     if (t["name"] == "sheen_E") sheen = &t;
-  ASSERT_NE(sheen, nullptr) << plan.output;
+  ASSERT_NE(sheen, nullptr) << plan;
   EXPECT_EQ(double((*sheen)["sheenRoughness"]["min"]), 0.0);
   EXPECT_EQ(double((*sheen)["sheenRoughness"]["max"]), 0.6);
   EXPECT_EQ((*sheen)["materials"], (nlohmann::json{"velvet textured", "satin"}));
-  const test::CommandResult bake = Lutbake("bake --out " + out.string() + " --scene " + scene +
-                                           " --tables sheen_E --sheen-visibility ashikhmin");
-  ASSERT_EQ(bake.status, 0) << bake.output;
-  EXPECT_EQ(test::FileNames(out),
-            (std::vector<std::string>{"sheen_E.bin", "sheen_E.exr", "sheen_E.h"}));
+  BakeRequest request = test::BakeRequestFor(out);
+  request.scenes = {scene};
+  request.tables = {"sheen_E"};
+  request.sheenVisibility = SheenVisibility::kAshikhmin;
+  Bake(request);
+  EXPECT_EQ(test::FileNames(out), (std::vector<std::string>{"lutbake-set.json", "sheen_E.bin",
+                                                            "sheen_E.exr", "sheen_E.h"}));
   const Table t = ReadExrTable((out / "sheen_E.exr").string());
   EXPECT_EQ(t.y.name, "sheenRoughness");
   EXPECT_EQ(t.y.min, 0.0);
   EXPECT_EQ(t.y.max, 0.6);
   EXPECT_EQ(t.y.count, 20);  // ceil(32 x 0.6): the full table's texel spacing
   EXPECT_EQ(*t.FindMetadata("visibility"), "ashikhmin");
-  const test::CommandResult check = Lutbake("check " + out.string());
-  EXPECT_EQ(check.status, 0) << check.output;
+  const CheckReport check = CheckBakedSet(out.string());
+  EXPECT_TRUE(check.passed()) << test::Describe(check);
   fs::remove_all(out);
 }
 
@@ -280,7 +253,10 @@ TEST(SheenTables, SceneWithSheenIsPlannedAndBaked) {
 // both compilers, run, and compared with the formula over the .bin values.
 TEST(SheenTables, HeaderHelperIsTheAlbedoScaling) {
   const fs::path out = test::Scratch("sheen_header");
-  ASSERT_EQ(Lutbake("bake --out " + out.string() + " --tables sheen_E --size 8").status, 0);
+  BakeRequest request = test::BakeRequestFor(out);  // --tables sheen_E --size 8
+  request.tables = {"sheen_E"};
+  request.size = 8;
+  Bake(request);
   const Table t = ReadBinaryTable((out / "sheen_E.bin").string());
   const fs::path program = out / "scaling.cpp";
   std::ofstream(program) << "#include <cstdio>\n#include \"sheen_E.h\"\n"

@@ -1,5 +1,7 @@
-// `lutbake check`: passes on a good bake, fails with a reason on every kind
-// of tampering; the lookup it judges with, and the readers it uses.
+// CheckBakedSet (`lutbake check`): passes on a good bake, fails with a
+// reason on every kind of tampering; the lookup it judges with, and the
+// readers it uses. The command line's exit statuses and messages are
+// tests/cli/bake_cli_test.cpp.
 #include "lutbake/validation/check.h"
 
 #include <gtest/gtest.h>
@@ -9,28 +11,31 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <regex>
 
 #include "lutbake/formats/binary_format.h"
 #include "lutbake/formats/table_reader.h"
 #include "lutbake/formats/writer.h"
+#include "lutbake/lutbake.h"
 #include "lutbake/tables/lookup.h"
+#include "support/bake_for_test.h"
 #include "support/cli_run.h"
 
 namespace lutbake {
 namespace {
 
 namespace fs = std::filesystem;
-using test::Lutbake;
 
-// A small complete set (sampled E, dfg, Eavg; Schlick Favg) baked once.
+// A small complete set (sampled E, dfg, Eavg; Schlick Favg) baked once
+// (bake --size 8 --samples 4096 --error-map).
 const fs::path &GoodBake() {
   static const fs::path dir = [] {
     const fs::path d = test::Scratch("check_good");
-    const test::CommandResult run =
-        Lutbake("bake --out " + d.string() + " --size 8 --samples 4096 --error-map");
-    EXPECT_EQ(run.status, 0) << run.output;
+    BakeRequest request = test::BakeRequestFor(d);
+    request.size = 8;
+    request.sampling.samples = 4096;
+    request.errorMaps = true;
+    Bake(request);
     return d;
   }();
   return dir;
@@ -145,10 +150,12 @@ TEST(Check, FailsOnAMixedSetAndOnForeignMetadata) {
   // E_avg from Beckmann next to GGX E: the furnace and the average refuse.
   const fs::path d = CopyOfGood("check_mixed");
   const fs::path other = test::Scratch("check_mixed_other");
-  ASSERT_EQ(Lutbake("bake --out " + other.string() +
-                    " --tables Eavg --size 8 --samples 4096 --ndf beckmann")
-                .status,
-            0);
+  BakeRequest beckmann = test::BakeRequestFor(other);  // --tables Eavg --ndf beckmann
+  beckmann.tables = {"Eavg"};
+  beckmann.size = 8;
+  beckmann.sampling.samples = 4096;
+  beckmann.ndf = NdfKind::kBeckmann;
+  Bake(beckmann);
   for (const char *f : {"Eavg.exr", "Eavg.bin", "Eavg.h"})
     fs::copy_file(other / f, d / f, fs::copy_options::overwrite_existing);
   fs::remove(d / "Eavg.err.exr");
@@ -189,9 +196,11 @@ TEST(Check, HeaderAloneIsChecked) {
 // rounding they state added to their bounds.
 TEST(Check, HalfHeadersAreHeldToTheirRounding) {
   const fs::path d = test::Scratch("check_half");
-  const test::CommandResult run =
-      Lutbake("bake --out " + d.string() + " --size 8 --tolerance 1e-6 --header-type half");
-  ASSERT_EQ(run.status, 0) << run.output;
+  BakeRequest request = test::BakeRequestFor(d);  // --size 8 --tolerance 1e-6 --header-type half
+  request.size = 8;
+  request.sampling.tolerance = 1e-6;
+  request.headerType = "half";
+  Bake(request);
   CheckReport r = CheckBakedSet(d.string(), Quick());
   EXPECT_TRUE(r.passed());
   ASSERT_NE(Find(r, "dfg", "formats"), nullptr);
@@ -226,9 +235,11 @@ TEST(Check, HalfHeadersAreHeldToTheirRounding) {
 // stored bounds.
 TEST(Check, TextureFormatsAreHeldToTheirStorage) {
   const fs::path d = test::Scratch("check_textures");
-  test::CommandResult run = Lutbake("bake --out " + d.string() +
-                                    " --size 8 --tolerance 1e-6 --format exr,png16,ktx2,dds-half");
-  ASSERT_EQ(run.status, 0) << run.output;
+  BakeRequest request = test::BakeRequestFor(d);
+  request.size = 8;
+  request.sampling.tolerance = 1e-6;
+  request.formats = {"exr", "png16", "ktx2", "dds-half"};
+  Bake(request);
   CheckReport r = CheckBakedSet(d.string(), Quick());
   EXPECT_TRUE(r.passed());
   const CheckResult *textures = Find(r, "dfg", "texture formats");
@@ -239,8 +250,11 @@ TEST(Check, TextureFormatsAreHeldToTheirStorage) {
       << textures->detail;
   for (const char *format : {"ktx2-half", "png8"}) {
     const fs::path alone = test::Scratch(std::string("check_textures_") + format);
-    run = Lutbake("bake --out " + alone.string() + " --size 8 --tolerance 1e-6 --format " + format);
-    ASSERT_EQ(run.status, 0) << run.output;
+    BakeRequest single = test::BakeRequestFor(alone);
+    single.size = 8;
+    single.sampling.tolerance = 1e-6;
+    single.formats = {format};
+    Bake(single);
     r = CheckBakedSet(alone.string(), Quick());
     EXPECT_TRUE(r.passed()) << format;
     fs::remove_all(alone);
@@ -263,36 +277,6 @@ TEST(Check, TextureFormatsAreHeldToTheirStorage) {
   EXPECT_NE(textures->detail.find("dfg.ktx2 differs at texel (7, 7) channel 1"), std::string::npos)
       << textures->detail;
   fs::remove_all(d);
-}
-
-TEST(Check, CommandLineExitsAndNamesTheFailure) {
-  test::CommandResult run = Lutbake("check " + GoodBake().string() + " --points 16");
-  EXPECT_EQ(run.status, 0) << run.output;
-  EXPECT_NE(run.output.find("all checks passed"), std::string::npos);
-  run = Lutbake("check " + GoodBake().string() + " --points 16 --json", true);
-  ASSERT_EQ(run.status, 0);
-  const nlohmann::json j = nlohmann::json::parse(run.output);
-  EXPECT_EQ(j["passed"], true);
-  EXPECT_GE(j["checks"].size(), 20u);
-
-  const fs::path d = CopyOfGood("check_cli");
-  for (const char *f : {"E.exr", "E.h"}) fs::remove(d / f);
-  const Table e = ReadBinaryTable((d / "E.bin").string());
-  PatchBin(d / "E.bin", 0, static_cast<float>(e.values[0] * 0.9));
-  run = Lutbake("check " + d.string() + " --points 16");
-  EXPECT_EQ(run.status, 1);
-  EXPECT_NE(run.output.find("FAILED: E texels"), std::string::npos) << run.output;
-
-  run = Lutbake("check " + (d / "missing").string());
-  EXPECT_EQ(run.status, 2);
-  EXPECT_NE(run.output.find("does not exist"), std::string::npos);
-  const fs::path empty = test::Scratch("check_empty");
-  fs::create_directories(empty);
-  run = Lutbake("check " + empty.string());
-  EXPECT_EQ(run.status, 1);
-  EXPECT_NE(run.output.find("no table files"), std::string::npos);
-  fs::remove_all(d);
-  fs::remove_all(empty);
 }
 
 TEST(Lookup, TexelCentresClampingAndTheMuIntegral) {
