@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "lutbake/formats/output_transaction.h"
 #include "lutbake/formats/atomic_output.h"
 #include "support/cli_run.h"
 
@@ -106,7 +107,7 @@ void ExpectSameFilesForThreadCounts(const std::string &options, int files) {
       contents.push_back(text);
     }
     for (size_t k = 1; k < contents.size(); ++k) EXPECT_EQ(contents[k], contents[0]) << name;
-    ++compared;
+    if (name != lutbake::kSetManifestName) ++compared;  // compared, not counted
   }
   EXPECT_EQ(compared, files);
   for (const fs::path &dir : dirs) fs::remove_all(dir);

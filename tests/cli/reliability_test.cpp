@@ -24,6 +24,7 @@
 #include <thread>
 #include <vector>
 
+#include "lutbake/formats/output_transaction.h"
 #include "lutbake/api/presets.h"
 #include "lutbake/formats/atomic_output.h"
 #include "lutbake/formats/binary_format.h"
@@ -140,7 +141,7 @@ std::vector<std::string> EveryFormatSet(const fs::path &out, int seed) {
   args.insert(args.end(), {"--shader", "glsl,hlsl,wgsl,msl"});
   return args;
 }
-constexpr size_t kEveryFormatSetFiles = 4 * 14 + 1 + 4;
+constexpr size_t kEveryFormatSetFiles = 4 * 14 + 1 + 4 + 1;  // and lutbake-set.json
 
 bool EndsWith(const std::string &text, const std::string &suffix) {
   return text.size() >= suffix.size() &&
@@ -154,6 +155,17 @@ std::vector<std::string> LongBake(const fs::path &out) {
           "512",  "--threads", "1",          "--format", "exr,bin,header"};
 }
 
+// The commandLine of lutbake-set.json, after checking that it lists files
+// (ReadSetManifest gives none for a file that does not parse).
+std::string SetManifestRun(const fs::path &file) {
+  if (lutbake::ReadSetManifest(file.parent_path().string()).empty())
+    throw lutbake::IoError(file.string() + ": lists no file or does not parse");
+  const std::string text = ReadAll(file), key = "\"commandLine\": \"";
+  const size_t at = text.find(key);
+  if (at == std::string::npos) throw lutbake::IoError(file.string() + ": no commandLine");
+  return text.substr(at + key.size(), text.find('"', at + key.size()) - at - key.size());
+}
+
 // The commandLine a final file records (the run it belongs to), after
 // reading it whole with the library's reader for its format; throws IoError
 // on a file that does not parse.
@@ -164,6 +176,7 @@ std::string RunOf(const fs::path &file) {
       if (key == "commandLine") return value;
     throw lutbake::IoError(path + ": no commandLine");
   };
+  if (name == lutbake::kSetManifestName) return SetManifestRun(file);
   if (EndsWith(name, ".exr")) return find(lutbake::ReadExrTable(path).metadata);
   if (EndsWith(name, ".bin")) return find(lutbake::ReadBinaryTable(path).metadata);
   if (EndsWith(name, ".png")) return find(lutbake::ReadPngTable(path).metadata);
@@ -290,7 +303,9 @@ TEST(Reliability, KillsDuringAPresetBakeNeverLeaveAMixedSet) {
       ++finals;
       std::string of;
       try {
-        if (name == "preset.json") {
+        if (name == lutbake::kSetManifestName) {
+          of = SetManifestRun(entry.path());
+        } else if (name == "preset.json") {
           lutbake::ReadPresetListing(entry.path().string());  // whole JSON
           const std::string text = ReadAll(entry.path()), key = "\"commandLine\": \"";
           const size_t at = text.find(key);
@@ -312,7 +327,8 @@ TEST(Reliability, KillsDuringAPresetBakeNeverLeaveAMixedSet) {
   const auto start = Clock::now();
   ASSERT_EQ(WaitFor(Spawn(run(1), log), std::chrono::seconds(60)), 0) << ReadAll(log);
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  ASSERT_EQ(expectOneRun("first run"), 3u);
+  // Two C arrays, preset.json and lutbake-set.json.
+  ASSERT_EQ(expectOneRun("first run"), 4u);
   std::mt19937 random(16);
   std::uniform_real_distribution<double> moment(0.0, 1.1 * seconds);
   for (int kill = 1; kill <= 20 && !::testing::Test::HasFailure(); ++kill) {
@@ -325,11 +341,11 @@ TEST(Reliability, KillsDuringAPresetBakeNeverLeaveAMixedSet) {
     // none of it, and the named temporaries the next run removes
     // (docs/reliability.md).
     const size_t finals = expectOneRun("kill " + std::to_string(kill));
-    EXPECT_TRUE(finals == 3u || temporaries > 0u)
+    EXPECT_TRUE(finals == 4u || temporaries > 0u)
         << "kill " << kill << ": " << finals << " files, " << temporaries << " temporaries";
   }
   ASSERT_EQ(WaitFor(Spawn(run(2), log), std::chrono::seconds(60)), 0) << ReadAll(log);
-  EXPECT_EQ(expectOneRun("after the kills"), 3u);
+  EXPECT_EQ(expectOneRun("after the kills"), 4u);
   EXPECT_EQ(temporaries, 0u) << "the next run removes the killed runs' temporaries";
   fs::remove_all(out);
   fs::remove(log);

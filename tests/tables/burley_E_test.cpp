@@ -259,7 +259,8 @@ TEST(BurleyTable, BakeEveryFormatAndCheck) {
 
   const fs::path half = test::Scratch("burley_half");
   bake = Lutbake("bake --out " + half.string() +
-                 " --tables burley_E --size 8 --format ktx2-half,dds-half,inc-half,js-half,ts-half "
+                 " --tables burley_E --size 8 --format "
+                 "ktx2-half,dds-half,inc-half,js-half,ts-half,header,bin "
                  "--header-type half --bin-type double");
   EXPECT_EQ(bake.status, 0) << bake.output;
   EXPECT_EQ(Lutbake("check " + half.string()).status, 0);
