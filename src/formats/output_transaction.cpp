@@ -251,6 +251,7 @@ void OutputTransaction::CommitSet() {
       foreign_.push_back(name);
   }
   std::sort(foreign_.begin(), foreign_.end());
+  std::sort(oldSetNames.begin(), oldSetNames.end());
   removed_ = oldSetNames;
   // An empty directory cannot mix two sets: the files go in one by one.
   if (anyEntry && TryExchange(oldSetNames)) return;

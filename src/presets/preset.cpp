@@ -64,15 +64,6 @@ double PresetAxis::Quantity(int i) const {
   return std::clamp(q, lowest, highest);
 }
 
-ValueType PresetStorage(const PresetTexture &texture) {
-  const std::string &f = texture.format;
-  if (f == "png8") return ValueType::kUnorm8;
-  if (f == "png16") return ValueType::kUnorm16;
-  if (f == "threejs-dfg" || (f.size() > 5 && f.compare(f.size() - 5, 5, "-half") == 0))
-    return ValueType::kHalf;
-  return ValueType::kFloat32;
-}
-
 namespace {
 
 // The bound asked of the sheen's Schlick-weighted part (HDRP's Charlie x):

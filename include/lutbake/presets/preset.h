@@ -145,9 +145,6 @@ const Preset *FindPreset(const std::string &name);
 // "filament, unreal, ...".
 std::string PresetNameList();
 
-// The storage the texture's format holds (half, unorm8, float32, ...).
-ValueType PresetStorage(const PresetTexture &texture);
-
 // Every texel of `texture`, with its integration bound, in the texture's
 // own memory order: a Table whose axes are u itself (x, y, z over [0, 1] at
 // the texture's placement: edges as the linear axis [-h, 1 + h], h = 0.5 /
