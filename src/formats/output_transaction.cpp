@@ -113,21 +113,26 @@ void RetireSibling(const fs::path &sibling, const fs::path &directory) {
   const std::vector<std::string> listed = ReadSetManifest(sibling.string());
   std::error_code ec;
   bool kept = false;
-  for (const auto &entry : fs::directory_iterator(sibling, ec)) {
-    const std::string name = entry.path().filename().string();
+  std::vector<fs::path> entries;
+  for (const auto &entry : fs::directory_iterator(sibling, ec)) entries.push_back(entry.path());
+  for (const fs::path &entry : entries) {
+    const std::string name = entry.filename().string();
+    // The list goes last: a retirement killed half-way leaves it beside
+    // the files it names, for the next one.
+    if (name == kSetManifestName) continue;
     const fs::path there = directory / name;
-    const bool ours = name == kSetManifestName ||
-                      std::find(listed.begin(), listed.end(), name) != listed.end() ||
-                      IsTemporaryName(name);
+    const bool ours =
+        std::find(listed.begin(), listed.end(), name) != listed.end() || IsTemporaryName(name);
     // Ours, a link to a file the directory holds, or a file the directory
     // now holds a newer one of.
-    if (ours || SameInode(entry.path(), there) || fs::exists(fs::symlink_status(there, ec))) {
-      ::unlink(entry.path().c_str());
-    } else if (::renameat2(AT_FDCWD, entry.path().c_str(), AT_FDCWD, there.c_str(),
-                           RENAME_NOREPLACE) != 0) {
+    if (ours || SameInode(entry, there) || fs::exists(fs::symlink_status(there, ec))) {
+      ::unlink(entry.c_str());
+    } else if (::renameat2(AT_FDCWD, entry.c_str(), AT_FDCWD, there.c_str(), RENAME_NOREPLACE) !=
+               0) {
       kept = true;
     }
   }
+  ::unlink((sibling / kSetManifestName).c_str());
   if (!kept) ::rmdir(sibling.c_str());
 }
 
@@ -231,7 +236,7 @@ void OutputTransaction::CommitSet() {
   manifest["lutbakeVersion"] = LutbakeVersion();
   manifest["commandLine"] = description_;
   manifest["files"] = newNames;
-  WriteText(kSetManifestName, manifest.dump(2) + "\n");
+  const std::string manifestText = manifest.dump(2) + "\n";
   const auto isNew = [&](const std::string &n) {
     return n == kSetManifestName || std::find(newNames.begin(), newNames.end(), n) != newNames.end();
   };
@@ -254,12 +259,14 @@ void OutputTransaction::CommitSet() {
   std::sort(oldSetNames.begin(), oldSetNames.end());
   removed_ = oldSetNames;
   // An empty directory cannot mix two sets: the files go in one by one.
-  if (anyEntry && TryExchange(oldSetNames)) return;
+  if (anyEntry && TryExchange(oldSetNames, manifestText)) return;
+  WriteText(kSetManifestName, manifestText);
   output_.Commit();
   for (const std::string &name : oldSetNames) ::unlink((fs::path(directory_) / name).c_str());
 }
 
-bool OutputTransaction::TryExchange(const std::vector<std::string> &oldSetNames) {
+bool OutputTransaction::TryExchange(const std::vector<std::string> &oldSetNames,
+                                    const std::string &manifestText) {
   (void)oldSetNames;  // the exchange leaves them in the sibling, which is retired
   const fs::path directory = Canonical(directory_);
   std::error_code ec;
@@ -290,11 +297,22 @@ bool OutputTransaction::TryExchange(const std::vector<std::string> &oldSetNames)
   for (const std::string &name : foreign_)
     if (::linkat(AT_FDCWD, (directory / name).c_str(), AT_FDCWD, (sibling / name).c_str(), 0) != 0)
       return abandon();
+  // The list first, durable: whatever a kill leaves in the sibling from here
+  // on is named by it (RetireSibling).
+  {
+    std::FILE *file = std::fopen((sibling / kSetManifestName).c_str(), "wb");
+    bool ok = file && std::fwrite(manifestText.data(), 1, manifestText.size(), file) ==
+                          manifestText.size();
+    ok = ok && std::fflush(file) == 0 && ::fsync(::fileno(file)) == 0;
+    if (file && std::fclose(file) != 0) ok = false;
+    if (!ok) return abandon();
+  }
   try {
     output_.LinkInto(sibling.string());
   } catch (const IoError &) {
     return abandon();
   }
+  files_.push_back(PathOf(kSetManifestName));
   // From here the new set lives only in the sibling.
   const int siblingFd = ::open(sibling.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (siblingFd >= 0) {

@@ -116,7 +116,7 @@ TEST(OutputSet, KillsNeverLeaveAMixedOrPartialSet) {
   };
   CommitSet(dir, namesOf(0), "run0");
   std::mt19937 random(7);
-  std::uniform_int_distribution<int> microseconds(0, 4000);
+  std::uniform_int_distribution<int> microseconds(0, 30000);
   int whole = 0, exchangedRuns = 0;
   for (int run = 1; run <= 40; ++run) {
     const pid_t pid = ::fork();

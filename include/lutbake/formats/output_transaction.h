@@ -88,7 +88,7 @@ class OutputTransaction {
 
  private:
   void CommitSet();
-  bool TryExchange(const std::vector<std::string> &oldSetNames);
+  bool TryExchange(const std::vector<std::string> &oldSetNames, const std::string &manifestText);
   std::string directory_;
   OutputMode mode_ = OutputMode::kFiles;
   std::string description_;
