@@ -794,6 +794,10 @@ DielectricIntegral IntegrateDielectricAlbedo(NdfKind ndf, SmithForm smith, Diele
 }
 
 constexpr double kHorizonAlpha = 0.04;
+// The average's panels in mu: graded by ratio 1 / kAverageKeep, at most
+// kAverageMaxPanel long.
+constexpr double kAverageKeep = 0.25;
+constexpr double kAverageMaxPanel = 0.5;
 
 DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, DielectricLobes lobes,
                                               double alpha, double eta, double tolerance) {
@@ -823,18 +827,21 @@ DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, Diel
   std::vector<Point> points;
   const double first = std::max(std::min(alpha, 0.01), 1e-12);
   const double scale10 = std::sqrt(10.0 * tolerance);
-  points.push_back({0.0, 0.0, first});
+  points.push_back({0.0, 0.0, first, false, false, kAverageKeep});
   if (cc > 0.0 && cc < 1.0) {
     const double d = std::max(scale10, 0.25 * alpha);
-    points.push_back({cc, d, d});
-    if (alpha >= kHorizonAlpha) points.push_back({eta, d, d});
+    points.push_back({cc, d, d, false, false, kAverageKeep});
+    // At mu = eta the circle touches the facets' horizon, where GGX's density
+    // jumps from alpha^2 / pi to 0: a square-root-type point, so the panels
+    // beside it are also mapped quadratically.
+    if (alpha >= kHorizonAlpha) points.push_back({eta, d, d, true, true, kAverageKeep});
     std::sort(points.begin(), points.end(),
               [](const Point &x, const Point &y) { return x.v < y.v; });
   }
-  points.push_back(
-      {1.0, cc > 0.0 && alpha >= kHorizonAlpha ? std::max(scale10, 0.1 * alpha) : 0.0, 0.0});
+  points.push_back({1.0, cc > 0.0 && alpha >= kHorizonAlpha ? std::max(scale10, 0.1 * alpha) : 0.0,
+                    0.0, false, false, kAverageKeep});
   std::vector<Panel> panels;
-  BuildPanels(points, 0.25, 0.0, &panels);
+  BuildPanels(points, kAverageMaxPanel, 0.0, &panels);
   // Each node's albedo to half the tolerance, with its own bound; every
   // panel at levels 0 and 1, then the panel with the largest difference a
   // level further until twice the differences are within half the tolerance.
