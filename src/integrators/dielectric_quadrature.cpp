@@ -614,28 +614,69 @@ OuterGrid FineGrid(double tolerance) {
 struct OuterBreak {
   double phi;
   bool layered;  // a Smith boundary layer meets it: graded toward as well
+  // Where known, the azimuth scale of that layer (0: unknown; graded to the
+  // grid's layerScale).
+  double layer = 0.0;
 };
 
 void OuterBreaks(const Setup &s, std::vector<OuterBreak> *out) {
   out->clear();
   if (!(s.cc2 > 0.0) || !(s.s_o > 0.0)) return;
   const double cc = std::sqrt(s.cc2), mu_o = s.mu_o, s_o = s.s_o;
-  const auto fromCos = [&](double sc, bool layered) {
+  const auto fromCos = [&](double sc, bool layered, double layer) {
     const double x = sc / s_o;
-    if (x > -1.0 && x < 1.0) out->push_back({std::acos(x), layered});
+    if (x > -1.0 && x < 1.0) out->push_back({std::acos(x), layered, layer});
   };
   // The tangency; with transmission the refracted horizon's two roots merge
   // there as well (sin(phi) = eta / s_o is the same azimuth: cos^2 = (c_crit^2
   // - mu_o^2) / s_o^2 = (s_o^2 - eta^2) / s_o^2), and the transmitted
-  // weight's Smith layer (width ~alpha in mu_t) shrinks into it.
-  if (mu_o < cc)
-    fromCos(std::sqrt((cc - mu_o) * (cc + mu_o)),
-            s.lobes == DielectricLobes::kReflectionAndTransmission);
-  fromCos(cc, false);
+  // weight's Smith layer (width l = min(alpha, mu_o) / 2 in mu_t) shrinks
+  // into it. Its scale: at delta phi from the tangency the refracting
+  // interval reaches W = sqrt(c^2 - c_crit^2) ~ sqrt(2 c_crit c_max' delta
+  // phi), c_max = sqrt(sc^2 + mu_o^2) the ray's largest c, c_max' = sc* eta /
+  // c_crit (sc* = sqrt(c_crit^2 - mu_o^2), sin(phi*) = eta / s_o), and
+  // mu_t ~ -W cos(theta*) / eta with cos(theta*) = mu_o / c_crit there; mu_t
+  // reaches l at delta phi = l^2 eta c_crit^2 / (2 mu_o^2 sc*).
+  if (mu_o < cc) {
+    const double scStar = std::sqrt((cc - mu_o) * (cc + mu_o));
+    const bool glass = s.lobes == DielectricLobes::kReflectionAndTransmission;
+    const double l = s.horizonScale;
+    fromCos(scStar, glass,
+            glass && mu_o > 0.0 ? l * l * s.eta * s.cc2 / (2.0 * mu_o * mu_o * scStar) : 0.0);
+  }
+  fromCos(cc, false, 0.0);
   const double cosTheta = mu_o / (2.0 * cc);
   if (cosTheta > 0.0 && cosTheta < 1.0) {
     const double T = std::sqrt((1.0 - cosTheta) * (1.0 + cosTheta)) / cosTheta;
-    fromCos((2.0 * s.cc2 / mu_o - mu_o) / T, true);
+    // Its layer: G2's, of width l_T = horizonScale (1 + T^2) / (2 sqrt(sc^2 +
+    // mu_o^2)) in T about the mirror's horizon T_r, seen as the total-
+    // reflection root T_c crosses it: delta phi = l_T / |d(T_r - T_c)/d phi|,
+    // the rate from the kinks an azimuth step h either side.
+    const double sc = (2.0 * s.cc2 / mu_o - mu_o) / T;
+    double layer = 0.0;
+    if (sc > -s_o && sc < s_o) {
+      const double phi = std::acos(sc / s_o), h = 1e-6;
+      double gap[2] = {0.0, 0.0};
+      bool found = true;
+      for (int side = 0; side < 2; ++side) {
+        Kinks kinks;
+        double T_end = 0.0;
+        const double at = phi + (side == 0 ? -h : h);
+        InnerKinks(s, std::cos(at), std::sin(at), &kinks, &T_end);
+        double T_r = -1.0, T_c = -1.0;
+        for (const Kink &k : kinks) {
+          if (k.kind == kMirror) T_r = k.T;
+          if (k.kind == kCritical && (T_c < 0.0 || std::abs(k.T - T) < std::abs(T_c - T)))
+            T_c = k.T;
+        }
+        if (T_r < 0.0 || T_c < 0.0) found = false;
+        gap[side] = T_r - T_c;
+      }
+      const double rate = std::abs(gap[1] - gap[0]) / (2.0 * h);
+      const double lT = s.horizonScale * (1.0 + T * T) / (2.0 * std::sqrt(sc * sc + mu_o * mu_o));
+      if (found && rate > 0.0) layer = lT / rate;
+    }
+    fromCos(sc, true, layer);
   }
   std::sort(out->begin(), out->end(),
             [](const OuterBreak &x, const OuterBreak &y) { return x.phi < y.phi; });
@@ -676,7 +717,7 @@ std::vector<Panel> OuterPanels(const Setup &s, const OuterGrid &grid) {
       // What varies on the scale a about pi/2 (the range's end at grazing
       // view, the NDF's peak above) is seen from a break at distance g from
       // pi/2 on the scale g: the panels beside it are graded to that too.
-      double scale = b.layered ? grid.layerScale : grid.azimuthScale;
+      double scale = b.layered ? std::max(grid.layerScale, 0.25 * b.layer) : grid.azimuthScale;
       const double g = std::max(std::abs(at - 0.5 * kPi), a);
       if (!(scale > 0.0 && scale < g)) scale = g;
       points.push_back({at, scale, scale, true, true, grid.keep});
