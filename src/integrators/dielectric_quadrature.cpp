@@ -837,7 +837,7 @@ DielectricIntegral IntegrateDielectricAlbedo(NdfKind ndf, SmithForm smith, Diele
 constexpr double kHorizonAlpha = 0.04;
 // The average's panels in mu: graded by ratio 1 / kAverageKeep, at most
 // kAverageMaxPanel long.
-constexpr double kAverageKeep = 0.25;
+constexpr double kAverageKeep = 0.125;
 constexpr double kAverageMaxPanel = 0.5;
 
 DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, DielectricLobes lobes,
