@@ -7,11 +7,75 @@
 #   2. hyperfine, 10 runs after 2 warm-ups: the command a user types, the
 #      process started and every file written, beside the adaptive
 #      quadrature at the same bound and the sampled bake of --samples 65536.
-# Usage: scripts/benchmark.sh [extra Google Benchmark flags]
+#   3. Every table's default bake, `bake --preset cycles` and `check` of the
+#      default set and of a default glass set, each timed (median of RUNS,
+#      default 3) right after the scalar baseline of the same run: a plain
+#      sampled DFG bake (`bake --tables dfg --estimator vndf-random --samples
+#      1024`, independent random points, scalar estimator); the ratio to it
+#      is the number to compare across machines.
+# Usage: scripts/benchmark.sh [--tables-only] [extra Google Benchmark flags]
+#   --tables-only: part 3 alone. Environment: RUNS=N its runs (default 3),
+#   ONLY=REGEX only the rows whose name matches (e.g. ONLY='^(glass|spec)_E$').
 set -euo pipefail
 cd "$(dirname "$0")/.."
+tables_only=0
+if [ "${1:-}" = "--tables-only" ]; then
+  tables_only=1
+  shift
+fi
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build --target lutbake lutbake_benchmark -j"$(nproc)" >/dev/null
+cmake --build build --target lutbake -j"$(nproc)" >/dev/null
+
+# Part 3: seconds of one run of "$@" (wall clock).
+seconds() {
+  local start end
+  start=$(date +%s.%N)
+  "$@" >/dev/null 2>&1
+  end=$(date +%s.%N)
+  echo "$end - $start" | bc -l
+}
+median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
+every_table() {
+  local runs="${RUNS:-3}" scratch name cmd base t b
+  scratch="$(mktemp -d)"
+  echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+  echo "baseline: lutbake bake --tables dfg --estimator vndf-random --samples 1024 (median of $runs, each run beside the measured one)"
+  echo
+  echo "| what | median | baseline median, same runs | ratio |"
+  echo "|---|---|---|---|"
+  ./build/lutbake bake --out "$scratch/glass" --tables glass_E,glass_Eavg --size 8 --eta-size 3 >/dev/null 2>&1
+  ./build/lutbake bake --out "$scratch/default" >/dev/null 2>&1
+  local -a names=(E Eavg Favg dfg f82 sheen_E sheen_Eavg glass_E glass_Eavg spec_E spec_Eavg
+                  oren_nayar_E oren_nayar_full_E "default set (E,Eavg,Favg,dfg)" "preset cycles"
+                  "check default set" "check glass_E,glass_Eavg (8 x 8 x 3)")
+  for name in "${names[@]}"; do
+    if [ -n "${ONLY:-}" ] && ! [[ "$name" =~ $ONLY ]]; then continue; fi
+    case "$name" in
+      "default set"*) cmd=(./build/lutbake bake --out "$scratch/t") ;;
+      "preset cycles") cmd=(./build/lutbake bake --out "$scratch/t" --preset cycles) ;;
+      "check default set") cmd=(./build/lutbake check "$scratch/default") ;;
+      "check glass"*) cmd=(./build/lutbake check "$scratch/glass") ;;
+      *) cmd=(./build/lutbake bake --out "$scratch/t" --tables "$name") ;;
+    esac
+    : >"$scratch/times"
+    : >"$scratch/base"
+    for _ in $(seq "$runs"); do
+      seconds ./build/lutbake bake --out "$scratch/b" --tables dfg --estimator vndf-random \
+        --samples 1024 >>"$scratch/base"
+      seconds "${cmd[@]}" >>"$scratch/times"
+      rm -rf "$scratch/t" "$scratch/b"
+    done
+    t=$(median <"$scratch/times")
+    b=$(median <"$scratch/base")
+    printf '| %s | %.3g s | %.3g s | %.3gx |\n' "$name" "$t" "$b" "$(echo "$t / $b" | bc -l)"
+  done
+  rm -rf "$scratch"
+}
+if [ "$tables_only" = 1 ]; then
+  every_table
+  exit 0
+fi
+cmake --build build --target lutbake_benchmark -j"$(nproc)" >/dev/null
 if ! command -v hyperfine >/dev/null; then
   SUDO=""; [ "$(id -u)" != 0 ] && SUDO=sudo
   $SUDO apt-get install -y -qq hyperfine >/dev/null
@@ -40,3 +104,5 @@ for r in results:
     print(f"| {r['command']} | {r['median'] * 1e3:.1f} ms | {r['min'] * 1e3:.1f} ms | "
           f"{r['max'] * 1e3:.1f} ms | {r['median'] / base:.2f} |")
 PY
+echo
+every_table

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "integrators/dielectric_kernel.h"
 #include "lutbake/core/math.h"
 #include "lutbake/integrators/gauss_kronrod.h"
 #include "lutbake/integrators/gauss_legendre.h"
@@ -56,9 +57,10 @@ struct Setup {
   SmithForm smith;
   DielectricLobes lobes;
   double eta, mu_o, s_o, L_o, invNorm;
-  double cc2;           // c_crit^2 = 1 - eta^2 for eta < 1, else 0
-  double horizonScale;  // in mu_i: min(alpha, mu_o) / 2
-  double grazingScale;  // in c, at o.h = 0: sqrt(eta^2 - 1) / 2 (0: none)
+  kernel::DielectricConstants constants;  // GGX's, for the vector kernel
+  double cc2;                             // c_crit^2 = 1 - eta^2 for eta < 1, else 0
+  double horizonScale;                    // in mu_i: min(alpha, mu_o) / 2
+  double grazingScale;                    // in c, at o.h = 0: sqrt(eta^2 - 1) / 2 (0: none)
 };
 
 enum Kind : int { kFacet = 1, kMirror = 2, kCritical = 3, kRefracted = 4, kSplit = 5 };
@@ -78,7 +80,15 @@ constexpr int kMaxKinks = 6;
 struct Kinks {
   Kink k[kMaxKinks];
   int n = 0;
-  void clear() { n = 0; }
+  // The roots T <= 0 of the total-reflection quadratic (NaN: none): branch
+  // points of W = sqrt(c^2 - c_crit^2) just beyond T = 0 (small) or beyond T
+  // = infinity (large, w = alpha / T < 0), where the refracting region
+  // reaches the end of the range.
+  double virtualRoots[2];
+  void clear() {
+    n = 0;
+    virtualRoots[0] = virtualRoots[1] = std::numeric_limits<double>::quiet_NaN();
+  }
   void push_back(const Kink &x) { k[n++] = x; }
   size_t size() const { return static_cast<size_t>(n); }
   const Kink &operator[](size_t i) const { return k[i]; }
@@ -120,10 +130,14 @@ void InnerKinks(const Setup &s, double cosPhi, double sinPhi, Kinks *kinks, doub
     const double A = sc * sc - s.cc2, B = sc * mu_o, C = mu_o * mu_o - s.cc2;
     const double disc = s.cc2 * (sc * sc + mu_o * mu_o - s.cc2);
     if (disc >= 0.0) {
-      double roots[2] = {-1.0, -1.0};
+      double roots[2] = {std::numeric_limits<double>::quiet_NaN(),
+                         std::numeric_limits<double>::quiet_NaN()};
       const double q = -(B + std::copysign(std::sqrt(disc), B));
       if (A != 0.0) roots[0] = q / A;
       if (q != 0.0) roots[1] = C / q;
+      int nv = 0;
+      for (double T : roots)
+        if (T <= 0.0 && std::isfinite(T)) kinks->virtualRoots[nv++] = T;
       for (double T : roots)
         if (inside(T) && sc * T + mu_o > 0.0) {
           const double slope = DcDT(sc, mu_o, T);
@@ -133,7 +147,12 @@ void InnerKinks(const Setup &s, double cosPhi, double sinPhi, Kinks *kinks, doub
           // where the two merge at the onset), so the panel there is mapped
           // by T = T_root + length u^2, which makes it analytic in u; on the
           // other side F = 1.
-          kinks->push_back({T, kCritical, 0.0, 0.0, slope<0.0, slope> 0.0});
+          // F varies on the scale c_crit itself beyond the root (its other
+          // singularities in c: -c_crit and 0; what matters as eta -> 1, where
+          // c_crit -> 0): graded toward on that side down to c_crit / 2.
+          const double d = 0.5 * std::sqrt(s.cc2) / std::abs(slope);
+          kinks->push_back(
+              {T, kCritical, slope < 0.0 ? d : 0.0, slope > 0.0 ? d : 0.0, slope<0.0, slope> 0.0});
         }
     }
     if (s.lobes == DielectricLobes::kReflectionAndTransmission && mu_o > 0.0) {
@@ -164,19 +183,6 @@ void InnerKinks(const Setup &s, double cosPhi, double sinPhi, Kinks *kinks, doub
   kinks->Sort();
 }
 
-// The sequence of kink kinds at an azimuth: where it changes, the inner
-// integral is not analytic in phi.
-// Packed 3 bits a kind, in order (at most kMaxKinks kinds).
-uint32_t Signature(const Setup &s, double phi) {
-  Kinks kinks;
-  double T_end = 0.0;
-  InnerKinks(s, std::cos(phi), std::sin(phi), &kinks, &T_end);
-  uint32_t out = 0;
-  for (const Kink &k : kinks)
-    if (k.kind != kSplit) out = (out << 3) | static_cast<uint32_t>(k.kind);
-  return out;
-}
-
 struct Point {
   double v, below, above;  // position and grading scales, in the variable
   bool sqBelow = false, sqAbove = false;
@@ -185,7 +191,13 @@ struct Point {
 
 struct Panel {
   double a, b;
-  int square = 0;  // +1: v = a + (b - a) u^2; -1: v = b - (b - a) u^2; 0: linear
+  // +1: v = a + (b - a) u^2; -1: v = b - (b - a) u^2; 0: linear;
+  // +2: v = root + (s_a + (s_b - s_a) u)^2, s_a = sqrt(a - root), s_b =
+  // sqrt(b - root), for a square-root branch point at root <= a just outside
+  // the panel (sqrt(v - root) is then linear in u); -2: v = root - (s_a +
+  // (s_b - s_a) u)^2, s = sqrt(root - v), for one at root >= b.
+  int square = 0;
+  double root = 0.0;
 };
 
 // Panels from a to b graded geometrically toward a (each keeps the share
@@ -272,6 +284,12 @@ void BuildPanels(const std::vector<Point> &points, double maxLength, double near
 // The node of a panel at u in [0, 1]; returns dv/du.
 double MapNode(const Panel &p, double u, double *v) {
   const double len = p.b - p.a;
+  if (p.square == 2 || p.square == -2) {
+    const double sa = std::sqrt(std::abs(p.a - p.root)), sb = std::sqrt(std::abs(p.b - p.root));
+    const double t = sa + (sb - sa) * u;
+    *v = p.square == 2 ? p.root + t * t : p.root - t * t;
+    return 2.0 * t * std::abs(sb - sa);
+  }
   if (p.square > 0) {
     *v = p.a + len * u * u;
     return 2.0 * len * u;
@@ -282,6 +300,75 @@ double MapNode(const Panel &p, double u, double *v) {
   }
   *v = p.a + len * u;
   return len;
+}
+
+// The square-root branch points of W = sqrt(c^2 - c_crit^2) along the ray,
+// in T: the roots of the total-reflection quadratic, inside the range (the
+// kinks) or not (negative T: just beyond T = 0 when small, beyond T =
+// infinity when large).
+int BranchPoints(const Kinks &kinks, double out[4]) {
+  int n = 0;
+  for (const Kink &k : kinks)
+    if (k.kind == kCritical) out[n++] = k.T;
+  for (double T : kinks.virtualRoots)
+    if (!std::isnan(T)) out[n++] = T;
+  return n;
+}
+
+// Panels whose integrand has a square-root branch point (in the panel's
+// variable) outside them but within a panel length of an end, and that are
+// not mapped otherwise: mapped about it (Panel::square = +-2), so that the
+// square root is linear in u. (Next to a kink the panel beside it is mapped
+// quadratically; this catches the panel beyond a short one, and the ends of
+// the range when the refracting region reaches them.)
+void MapNearBranchPoints(const double *roots, int n, std::vector<Panel> *panels) {
+  for (Panel &p : *panels) {
+    if (p.square != 0) continue;
+    const double len = p.b - p.a;
+    double best = 0.0;
+    int side = 0;
+    for (int k = 0; k < n; ++k) {
+      const double v = roots[k];
+      if (!std::isfinite(v)) continue;
+      if (v <= p.a && p.a - v <= len && (side == 0 || p.a - v < best)) {
+        best = p.a - v;
+        side = 2;
+        p.root = v;
+      } else if (v >= p.b && v - p.b <= len && (side == 0 || v - p.b < best)) {
+        best = v - p.b;
+        side = -2;
+        p.root = v;
+      }
+    }
+    p.square = side;
+  }
+}
+
+// The refracting region reaching the start of the range (T = 0, or T =
+// infinity in the tail) with W's branch point just beyond it, closer than
+// half the way to the next point: the first panel is then mapped about it
+// (and split from a branch point at its other end, as two square-root ends
+// are). Marks points[0]; returns the root (NaN: none).
+double MarkStartRoot(const double *roots, int n, std::vector<Point> *points) {
+  double found = std::numeric_limits<double>::quiet_NaN();
+  if (points->size() < 2) return found;
+  Point &start = (*points)[0];
+  const double v0 = start.v, reach = 0.5 * ((*points)[1].v - v0);
+  for (int k = 0; k < n; ++k)
+    if (roots[k] <= v0 && v0 - roots[k] < reach && !(v0 - roots[k] >= v0 - found)) found = roots[k];
+  if (!std::isnan(found)) {
+    start.sqAbove = true;
+    start.above = 0.0;
+  }
+  return found;
+}
+
+// After BuildPanels: the first panel, mapped quadratically toward its start,
+// mapped about the root found by MarkStartRoot instead.
+void MapStartRoot(double root, std::vector<Panel> *panels) {
+  if (std::isnan(root) || panels->empty() || panels->front().square != 1) return;
+  panels->front().square = 2;
+  panels->front().root = root;
 }
 
 // The facet weight times the measure: (sc T + mu_o) / (mu_o + L_o) w(h)
@@ -297,6 +384,40 @@ double NodeValue(const Setup &s, double sc, double cosTheta, double sinTheta,
   return w == 0.0 ? 0.0 : cOverCosTimesJacobian * s.invNorm * w;
 }
 
+// GGX's nodes of one azimuth (core, then tail), gathered so that the
+// geometry and the facet weights are computed by the vector kernel
+// (dielectric_kernel.h), then summed panel by panel in node order: the same
+// bits on every instruction set.
+struct NodeBatch {
+  std::vector<double> v, ruleJac, terms;
+  size_t n = 0, core = 0;
+  void clear() { n = core = 0; }
+  void Add(double at, double ruleWeightTimesJacobian) {
+    if (n == v.size()) {
+      v.resize(2 * n + 256);
+      ruleJac.resize(v.size());
+    }
+    v[n] = at;
+    ruleJac[n++] = ruleWeightTimesJacobian;
+  }
+  void EndCore() { core = n; }
+  // The sum over panels of `nodes` nodes each.
+  double Sum(const kernel::DielectricConstants &k, double sc, int nodes) {
+    terms.resize(v.size());
+    kernel::DielectricTerms(k, sc, false, v.data(), ruleJac.data(), core, terms.data());
+    kernel::DielectricTerms(k, sc, true, v.data() + core, ruleJac.data() + core, n - core,
+                            terms.data() + core);
+    double sum = 0.0;
+    const size_t m = static_cast<size_t>(nodes);
+    for (size_t p = 0; p < n; p += m) {
+      double part = 0.0;
+      for (size_t j = p; j < p + m; ++j) part += terms[j];
+      sum += part;
+    }
+    return sum;
+  }
+};
+
 // The inner integral at one azimuth with n nodes per panel.
 double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *evaluations) {
   Kinks kinks;
@@ -305,7 +426,8 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
   if (!(T_end > 0.0)) return 0.0;
   const double alpha = s.ndf.alpha, sc = s.s_o * cosPhi;
   const GaussLegendreRule &rule = GaussLegendre(n);
-  double sum = 0.0;
+  double branch[4], branchX[4];
+  const int nBranch = BranchPoints(kinks, branch);
   // Reused across calls: no allocation per azimuth.
   thread_local std::vector<Point> points;
   thread_local std::vector<Panel> panels;
@@ -348,21 +470,23 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
     if (coreEndsAtFacet && s.grazingScale > 0.0)
       coreLast.below = s.grazingScale / std::abs(DcDT(sc, s.mu_o, T_end)) / alpha;
     points.push_back(coreLast);
+    for (int k = 0; k < nBranch; ++k) branchX[k] = branch[k] / alpha;
+    const double startRoot = MarkStartRoot(branchX, nBranch, &points);
     BuildPanels(points, kMaxPanel, 0.0, &panels);
+    MapStartRoot(startRoot, &panels);
+    MapNearBranchPoints(branchX, nBranch, &panels);
+    thread_local NodeBatch batch;
+    batch.clear();
     for (const Panel &p : panels) {
-      double part = 0.0;
       for (int j = 0; j < n; ++j) {
+        // (c / cos) = sc T + mu_o; d(xi)/dx = 2 x / (1 + x^2)^2 (the kernel).
         double x = 0.0;
         const double jac = MapNode(p, rule.x[j], &x);
-        const double q = 1.0 + x * x, T = alpha * x;
-        const double cosTheta = 1.0 / std::sqrt(1.0 + T * T), sinTheta = T * cosTheta;
-        // (c / cos) = sc T + mu_o; d(xi)/dx = 2 x / (1 + x^2)^2.
-        part += rule.w[j] * jac *
-                NodeValue(s, sc, cosTheta, sinTheta, (sc * T + s.mu_o) * 2.0 * x / (q * q));
+        batch.Add(x, rule.w[j] * jac);
       }
-      sum += part;
       *evaluations += n;
     }
+    batch.EndCore();
     if (T_end > T_s) {
       // Tail: w = alpha / T in [alpha / T_end, alpha / T_s], decreasing in T.
       points.clear();
@@ -379,23 +503,23 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
                             kinks[r].sqAbove, kinks[r].sqBelow});
         }
       points.push_back({alpha / T_s, sAbove * alpha / (T_s * T_s), 0.0, qAbove, false});
+      for (int k = 0; k < nBranch; ++k) branchX[k] = alpha / branch[k];
+      const double tailRoot = MarkStartRoot(branchX, nBranch, &points);
       BuildPanels(points, kMaxPanel, alpha, &panels);
+      MapStartRoot(tailRoot, &panels);
+      MapNearBranchPoints(branchX, nBranch, &panels);
       for (const Panel &p : panels) {
-        double part = 0.0;
         for (int j = 0; j < n; ++j) {
+          // (c / cos) d(xi)/dw = (c r / w) 2 w / (1 + w^2)^2 = 2 c r / (1 + w^2)^2,
+          // r = sqrt(w^2 + alpha^2) (the kernel).
           double w = 0.0;
           const double jac = MapNode(p, rule.x[j], &w);
-          const double r = std::sqrt(w * w + alpha * alpha), q = 1.0 + w * w;
-          const double cosTheta = w / r, sinTheta = alpha / r;
-          // (c / cos) d(xi)/dw = (c r / w) 2 w / (1 + w^2)^2 = 2 c r / (1 + w^2)^2.
-          const double c = sc * sinTheta + s.mu_o * cosTheta;
-          part += rule.w[j] * jac * NodeValue(s, sc, cosTheta, sinTheta, 2.0 * c * r / (q * q));
+          batch.Add(w, rule.w[j] * jac);
         }
-        sum += part;
         *evaluations += n;
       }
     }
-    return sum;
+    return batch.Sum(s.constants, sc, n);
   }
   // Beckmann: t = T / alpha in [0, min(7, T_end / alpha)].
   const double tEnd = std::min(kBeckmannCut, T_end / alpha);
@@ -407,7 +531,12 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
   if (T_end / alpha <= kBeckmannCut && s.grazingScale > 0.0)
     last.below = s.grazingScale / std::abs(DcDT(sc, s.mu_o, T_end)) / alpha;
   points.push_back(last);
+  for (int k = 0; k < nBranch; ++k) branchX[k] = branch[k] / alpha;
+  const double startRoot = MarkStartRoot(branchX, nBranch, &points);
   BuildPanels(points, kBeckmannMaxPanel, 0.0, &panels);
+  MapStartRoot(startRoot, &panels);
+  MapNearBranchPoints(branchX, nBranch, &panels);
+  double sum = 0.0;
   for (const Panel &p : panels) {
     double part = 0.0;
     for (int j = 0; j < n; ++j) {
@@ -435,6 +564,7 @@ Setup MakeSetup(NdfKind kind, SmithForm smith, DielectricLobes lobes, double alp
   s.s_o = SafeSqrt((1.0 - mu_o) * (1.0 + mu_o));
   s.L_o = s.ndf.MuLambda(mu_o);
   s.invNorm = 1.0 / (mu_o + s.L_o);
+  s.constants = {alpha, eta, mu_o, s.L_o, s.invNorm, smith, lobes};
   s.cc2 = eta < 1.0 ? (1.0 - eta) * (1.0 + eta) : 0.0;
   s.horizonScale = std::max(0.5 * std::min(alpha, mu_o), kSmallestScale);
   s.grazingScale = eta > 1.0 ? 0.5 * std::sqrt((eta - 1.0) * (eta + 1.0)) : 0.0;
@@ -445,25 +575,116 @@ Setup MakeSetup(NdfKind kind, SmithForm smith, DielectricLobes lobes, double alp
 // the detected kinks (1 / keep), the longest panel, and the scale the
 // grading stops at next to a detected kink.
 struct OuterGrid {
-  double keep, maxPanel, azimuthScale;
+  double keep, maxPanel, azimuthScale, layerScale;
 };
 
 // The coarse grid the albedo tries first: ratio 4, panels up to pi/2 and
 // the grading stopped at sqrt(10 tolerance); its panels are refined one by
 // one, so that the few that need it reach the higher levels.
 OuterGrid CoarseGrid(double tolerance) {
-  return {0.25, 0.5 * kPi, Clamp(std::sqrt(10.0 * tolerance), 1e-9, 0.1)};
+  return {0.25, 0.5 * kPi, 0.0, Clamp(std::sqrt(10.0 * tolerance), 1e-9, 0.1)};
 }
 
 // The fine grid: ratio 2, panels up to 0.5, grading down to sqrt(1e-3
 // tolerance). The albedo falls back on it where the coarse grid does not
 // converge.
 OuterGrid FineGrid(double tolerance) {
-  return {0.5, kMaxPanel, Clamp(std::sqrt(1e-3 * tolerance), 1e-9, 0.1)};
+  const double scale = Clamp(std::sqrt(1e-3 * tolerance), 1e-9, 0.1);
+  return {0.5, kMaxPanel, scale, scale};
+}
+
+// The azimuths where the inner integral is not analytic for eta < 1, in
+// closed form (the kinks' sequence changes there; dielectric_quadrature.h):
+//  - the total-reflection circle c = c_crit touches the ray: c along a ray
+//    is largest at T = sc / mu_o, sqrt(sc^2 + mu_o^2), so sc =
+//    sqrt(c_crit^2 - mu_o^2) (mu_o < c_crit). There the refracted horizon
+//    meets that circle too (at cos(theta) = mu_o / c_crit). A kink of the
+//    form max(delta, 0) analytic: the two roots bound a refracting interval
+//    whose integral is analytic in (T_2 - T_1)^2 ~ delta;
+//  - its second root leaves through T = infinity: c(T -> inf) = sc = c_crit;
+//  - the mirror's horizon crosses the total-reflection circle: mu_r = 2 c
+//    cos(theta) - mu_o = 0 at c = c_crit, cos(theta) = mu_o / (2 c_crit),
+//    sc = (c_crit / cos(theta) - mu_o) / T.
+// (The refracted horizon never reaches o.h = 0, which reflects totally, nor
+// crosses the mirror's: mu_r = mu_t = 0 would need W = -c.) Each is a
+// square-root-type point (a kink position analytic in sqrt(phi - phi*), or
+// a product of max(., 0) and sqrt(max(., 0)) crossing): the panels on both
+// sides are mapped quadratically (phi = phi* +- length u^2), which makes
+// them analytic in u.
+struct OuterBreak {
+  double phi;
+  bool layered;  // a Smith boundary layer meets it: graded toward as well
+  // Where known, the azimuth scale of that layer (0: unknown; graded to the
+  // grid's layerScale).
+  double layer = 0.0;
+};
+
+void OuterBreaks(const Setup &s, std::vector<OuterBreak> *out) {
+  out->clear();
+  if (!(s.cc2 > 0.0) || !(s.s_o > 0.0)) return;
+  const double cc = std::sqrt(s.cc2), mu_o = s.mu_o, s_o = s.s_o;
+  const auto fromCos = [&](double sc, bool layered, double layer) {
+    const double x = sc / s_o;
+    if (x > -1.0 && x < 1.0) out->push_back({std::acos(x), layered, layer});
+  };
+  // The tangency; with transmission the refracted horizon's two roots merge
+  // there as well (sin(phi) = eta / s_o is the same azimuth: cos^2 = (c_crit^2
+  // - mu_o^2) / s_o^2 = (s_o^2 - eta^2) / s_o^2), and the transmitted
+  // weight's Smith layer (width l = min(alpha, mu_o) / 2 in mu_t) shrinks
+  // into it. Its scale: at delta phi from the tangency the refracting
+  // interval reaches W = sqrt(c^2 - c_crit^2) ~ sqrt(2 c_crit c_max' delta
+  // phi), c_max = sqrt(sc^2 + mu_o^2) the ray's largest c, c_max' = sc* eta /
+  // c_crit (sc* = sqrt(c_crit^2 - mu_o^2), sin(phi*) = eta / s_o), and
+  // mu_t ~ -W cos(theta*) / eta with cos(theta*) = mu_o / c_crit there; mu_t
+  // reaches l at delta phi = l^2 eta c_crit^2 / (2 mu_o^2 sc*).
+  if (mu_o < cc) {
+    const double scStar = std::sqrt((cc - mu_o) * (cc + mu_o));
+    const bool glass = s.lobes == DielectricLobes::kReflectionAndTransmission;
+    const double l = s.horizonScale;
+    fromCos(scStar, glass,
+            glass && mu_o > 0.0 ? l * l * s.eta * s.cc2 / (2.0 * mu_o * mu_o * scStar) : 0.0);
+  }
+  fromCos(cc, false, 0.0);
+  const double cosTheta = mu_o / (2.0 * cc);
+  if (cosTheta > 0.0 && cosTheta < 1.0) {
+    const double T = std::sqrt((1.0 - cosTheta) * (1.0 + cosTheta)) / cosTheta;
+    // Its layer: G2's, of width l_T = horizonScale (1 + T^2) / (2 sqrt(sc^2 +
+    // mu_o^2)) in T about the mirror's horizon T_r, seen as the total-
+    // reflection root T_c crosses it: delta phi = l_T / |d(T_r - T_c)/d phi|,
+    // the rate from the kinks an azimuth step h either side.
+    const double sc = (2.0 * s.cc2 / mu_o - mu_o) / T;
+    double layer = 0.0;
+    if (sc > -s_o && sc < s_o) {
+      const double phi = std::acos(sc / s_o), h = 1e-6;
+      double gap[2] = {0.0, 0.0};
+      bool found = true;
+      for (int side = 0; side < 2; ++side) {
+        Kinks kinks;
+        double T_end = 0.0;
+        const double at = phi + (side == 0 ? -h : h);
+        InnerKinks(s, std::cos(at), std::sin(at), &kinks, &T_end);
+        double T_r = -1.0, T_c = -1.0;
+        for (const Kink &k : kinks) {
+          if (k.kind == kMirror) T_r = k.T;
+          if (k.kind == kCritical && (T_c < 0.0 || std::abs(k.T - T) < std::abs(T_c - T)))
+            T_c = k.T;
+        }
+        if (T_r < 0.0 || T_c < 0.0) found = false;
+        gap[side] = T_r - T_c;
+      }
+      const double rate = std::abs(gap[1] - gap[0]) / (2.0 * h);
+      const double lT = s.horizonScale * (1.0 + T * T) / (2.0 * std::sqrt(sc * sc + mu_o * mu_o));
+      if (found && rate > 0.0) layer = lT / rate;
+    }
+    fromCos(sc, true, layer);
+  }
+  std::sort(out->begin(), out->end(),
+            [](const OuterBreak &x, const OuterBreak &y) { return x.phi < y.phi; });
 }
 
 // The outer panels in phi: 0, pi/2 (graded to asinh(mu_o / s_o)), the
-// detected kinks (graded to azimuthScale), pi.
+// closed-form breaks above (mapped quadratically on both sides, graded
+// toward by `keep` down to `azimuthScale`), pi.
 std::vector<Panel> OuterPanels(const Setup &s, const OuterGrid &grid) {
   std::vector<Panel> panels;
   if (s.s_o == 0.0) {  // normal view: nothing depends on phi
@@ -473,29 +694,34 @@ std::vector<Panel> OuterPanels(const Setup &s, const OuterGrid &grid) {
   std::vector<Point> points;
   points.push_back({0.0, 0.0, 0.0});
   points.push_back({kPi, 0.0, 0.0});
-  const double a = std::max(std::asinh(s.mu_o / s.s_o), kSmallestScale);
+  double a = std::asinh(s.mu_o / s.s_o);
+  if (s.cc2 > 0.0) {
+    // The total-reflection circle passes within |mu_o - c_crit| of the normal,
+    // where the NDF's peak (width alpha in T) sits; near n that circle is a
+    // line across the rays at phi = pi/2, so the rays within ~|mu_o - c_crit|
+    // / (alpha s_o) of pi/2 cross it inside the peak, and its second root,
+    // T = 2 sc / mu_o, is there within alpha mu_o / (2 s_o) of pi/2: the
+    // inner integral changes on that scale there (by the peak's share of F).
+    const double alpha = std::max(s.ndf.alpha, kSmallestScale);
+    const double peak = std::max(std::abs(s.mu_o - std::sqrt(s.cc2)) / (alpha * s.s_o),
+                                 0.25 * alpha * s.mu_o / s.s_o);
+    a = std::min(a, peak);
+  }
+  a = std::max(a, kSmallestScale);
   points.push_back({0.5 * kPi, a, a, false, false, grid.keep});
-  uint32_t previous = Signature(s, 0.0);
-  double previousPhi = 0.0;
-  // For eta >= 1 the only kinks are T_r and the range's end T_c, with T_r <
-  // T_c wherever T_c exists (mu_r = -mu_o < 0 at o.h = 0): the sequence never
-  // changes, and the scan (~0.5 ms) is skipped.
-  const int scan = s.cc2 > 0.0 ? kScanAzimuths : 0;
-  for (int j = 1; j <= scan; ++j) {
-    const double phi = kPi * j / scan;
-    const uint32_t current = Signature(s, phi);
-    if (current != previous) {
-      double lo = previousPhi, hi = phi;
-      for (int it = 0; it < 60 && hi - lo > 1e-15; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        (Signature(s, mid) == previous ? lo : hi) = mid;
-      }
-      const double at = 0.5 * (lo + hi);
-      if (std::abs(at - 0.5 * kPi) > 1e-12)
-        points.push_back({at, grid.azimuthScale, grid.azimuthScale, false, false, grid.keep});
+  thread_local std::vector<OuterBreak> breaks;
+  OuterBreaks(s, &breaks);
+  for (const OuterBreak &b : breaks) {
+    const double at = b.phi;
+    if (std::abs(at - 0.5 * kPi) > 1e-12 && at > 1e-12 && at < kPi - 1e-12) {
+      // What varies on the scale a about pi/2 (the range's end at grazing
+      // view, the NDF's peak above) is seen from a break at distance g from
+      // pi/2 on the scale g: the panels beside it are graded to that too.
+      double scale = b.layered ? std::max(grid.layerScale, 0.25 * b.layer) : grid.azimuthScale;
+      const double g = std::max(std::abs(at - 0.5 * kPi), a);
+      if (!(scale > 0.0 && scale < g)) scale = g;
+      points.push_back({at, scale, scale, true, true, grid.keep});
     }
-    previous = current;
-    previousPhi = phi;
   }
   std::sort(points.begin(), points.end(), [](const Point &x, const Point &y) { return x.v < y.v; });
   BuildPanels(points, grid.maxPanel, 0.0, &panels);
@@ -506,13 +732,13 @@ std::vector<Panel> OuterPanels(const Setup &s, const OuterGrid &grid) {
 double PanelAtLevel(const Setup &s, const Panel &p, int level, uint64_t *evaluations) {
   const int n = kNodes[level];
   const GaussLegendreRule &rule = GaussLegendre(n);
-  const double len = p.b - p.a;
   double part = 0.0;
   for (int j = 0; j < n; ++j) {
-    const double phi = p.a + len * rule.x[j];
-    part += rule.w[j] * Inner(s, std::cos(phi), std::sin(phi), n, evaluations);
+    double phi = 0.0;
+    const double jac = MapNode(p, rule.x[j], &phi);
+    part += rule.w[j] * jac * Inner(s, std::cos(phi), std::sin(phi), n, evaluations);
   }
-  return part * len;
+  return part;
 }
 
 // What the Beckmann cut at t = 7 may leave out (see the header).
@@ -609,6 +835,10 @@ DielectricIntegral IntegrateDielectricAlbedo(NdfKind ndf, SmithForm smith, Diele
 }
 
 constexpr double kHorizonAlpha = 0.04;
+// The average's panels in mu: graded by ratio 1 / kAverageKeep, at most
+// kAverageMaxPanel long.
+constexpr double kAverageKeep = 0.125;
+constexpr double kAverageMaxPanel = 0.5;
 
 DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, DielectricLobes lobes,
                                               double alpha, double eta, double tolerance) {
@@ -638,18 +868,21 @@ DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, Diel
   std::vector<Point> points;
   const double first = std::max(std::min(alpha, 0.01), 1e-12);
   const double scale10 = std::sqrt(10.0 * tolerance);
-  points.push_back({0.0, 0.0, first});
+  points.push_back({0.0, 0.0, first, false, false, kAverageKeep});
   if (cc > 0.0 && cc < 1.0) {
     const double d = std::max(scale10, 0.25 * alpha);
-    points.push_back({cc, d, d});
-    if (alpha >= kHorizonAlpha) points.push_back({eta, d, d});
+    points.push_back({cc, d, d, false, false, kAverageKeep});
+    // At mu = eta the circle touches the facets' horizon, where GGX's density
+    // jumps from alpha^2 / pi to 0: a square-root-type point, so the panels
+    // beside it are also mapped quadratically.
+    if (alpha >= kHorizonAlpha) points.push_back({eta, d, d, true, true, kAverageKeep});
     std::sort(points.begin(), points.end(),
               [](const Point &x, const Point &y) { return x.v < y.v; });
   }
-  points.push_back(
-      {1.0, cc > 0.0 && alpha >= kHorizonAlpha ? std::max(scale10, 0.1 * alpha) : 0.0, 0.0});
+  points.push_back({1.0, cc > 0.0 && alpha >= kHorizonAlpha ? std::max(scale10, 0.1 * alpha) : 0.0,
+                    0.0, false, false, kAverageKeep});
   std::vector<Panel> panels;
-  BuildPanels(points, 0.25, 0.0, &panels);
+  BuildPanels(points, kAverageMaxPanel, 0.0, &panels);
   // Each node's albedo to half the tolerance, with its own bound; every
   // panel at levels 0 and 1, then the panel with the largest difference a
   // level further until twice the differences are within half the tolerance.

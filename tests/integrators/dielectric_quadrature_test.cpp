@@ -8,10 +8,14 @@
 #include "lutbake/integrators/dielectric_quadrature.h"
 
 #include <gtest/gtest.h>
+#include <hwy/targets.h>
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
+#include <vector>
 
+#include "integrators/dielectric_kernel.h"
 #include "lutbake/integrators/gauss_legendre.h"
 #include "lutbake/models/fresnel.h"
 
@@ -290,6 +294,77 @@ TEST(DielectricQuadrature, TransmittedAveragesAreReciprocal) {
   EXPECT_EQ(IntegrateDielectricAverage(NdfKind::kGgx, SmithForm::kCorrelated, kGlass, 0.0, eta, tol)
                 .value,
             1.0);
+}
+
+// GGX's facet weights come from a Highway kernel (dielectric_kernel.h): on
+// every instruction set this build has and the processor runs, the same bits
+// as its scalar form, lane by lane, and within a few ulps of the library's
+// DielectricFacetWeight (both sides, total internal reflection, grazing and
+// index-matched facets); and whole albedos the same bits on every target.
+TEST(DielectricQuadrature, KernelSameBitsOnEveryInstructionSetAndMatchesFacetWeight) {
+  std::vector<double> c, hz, muR;
+  std::vector<kernel::DielectricConstants> constants;
+  for (double eta : {1.0 / 128.0, 1.0 / 1.5, 1.0 - 1e-6, 1.0, 1.0 + 1e-6, 1.5, 128.0})
+    for (double alpha : {1e-4, 0.09, 1.0})
+      for (double mu_o : {0.0, 0.02, 0.6, 1.0})
+        for (SmithForm smith : {SmithForm::kCorrelated, SmithForm::kSeparable})
+          for (DielectricLobes lobes : {kGlass, kReflectionOnly}) {
+            const Ndf ndf{NdfKind::kGgx, alpha};
+            constants.push_back({alpha, eta, mu_o, ndf.MuLambda(mu_o),
+                                 1.0 / (mu_o + ndf.MuLambda(mu_o)), smith, lobes});
+          }
+  // Facets: o.h from -0.1 to 1 (the critical cosines of these etas among
+  // them), h.z from 0.01 to 1.
+  std::vector<double> cs;
+  for (int k = 0; k <= 40; ++k) cs.push_back(-0.1 + 1.1 * k / 40.0);
+  for (double eta : {1.0 / 1.5, 1.0 - 1e-6}) {
+    const double cc = std::sqrt((1.0 - eta) * (1.0 + eta));
+    cs.insert(cs.end(), {cc, std::nextafter(cc, 2.0), cc * (1.0 + 1e-9)});
+  }
+  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  ASSERT_FALSE(targets.empty());
+  int compared = 0;
+  for (const kernel::DielectricConstants &k : constants) {
+    c.clear();
+    hz.clear();
+    muR.clear();
+    for (double cv : cs)
+      for (double h : {0.01, 0.3, 0.7, 1.0}) {
+        c.push_back(cv);
+        hz.push_back(h);
+        muR.push_back(2.0 * cv * h - k.mu_o);
+      }
+    std::vector<double> w(c.size());
+    for (int64_t target : targets) {
+      hwy::SetSupportedTargetsForTest(target);
+      kernel::DielectricWeights(k, c.data(), hz.data(), muR.data(), c.size(), w.data());
+      for (size_t i = 0; i < c.size(); ++i) {
+        const double scalar = kernel::DielectricWeightScalar(k, c[i], hz[i], muR[i]);
+        ASSERT_EQ(w[i], scalar) << hwy::TargetName(target) << " eta " << k.eta << " c " << c[i];
+        const double library = DielectricFacetWeight(Ndf{NdfKind::kGgx, k.alpha}, k.smith, k.lobes,
+                                                     k.eta, k.mu_o, k.L_o, c[i], hz[i], muR[i]);
+        EXPECT_NEAR(w[i], library, 1e-14) << "eta " << k.eta << " c " << c[i] << " hz " << hz[i];
+        ++compared;
+      }
+    }
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  std::vector<double> first;
+  for (int64_t target : targets) {
+    hwy::SetSupportedTargetsForTest(target);
+    std::vector<double> values;
+    for (double eta : {1.0 / 1.5, 1.5})
+      for (double mu : {0.05, 0.7}) {
+        const DielectricIntegral q = IntegrateDielectricAlbedo(
+            NdfKind::kGgx, SmithForm::kCorrelated, kGlass, 0.3, mu, eta, 1e-8);
+        values.insert(values.end(), {q.value, q.bound});
+      }
+    if (first.empty()) first = values;
+    for (size_t i = 0; i < values.size(); ++i)
+      EXPECT_EQ(values[i], first[i]) << hwy::TargetName(target) << " value " << i;
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  std::printf("%d facet weights compared on %zu instruction sets\n", compared, targets.size());
 }
 
 TEST(DielectricQuadrature, RefusesBadArguments) {

@@ -43,18 +43,40 @@
 // tail panel is longer than max(its start, alpha). Panels are at most 0.5
 // long in x and w, 1 in t (exp(-t^2) is entire), split into equal pieces.
 //
-// The outer integral (phi in [0, pi]) is analytic except where the inner
-// structure changes: at phi = pi/2, where T_c and T_r go to infinity as
-// mu_o -> 0 (nearest singularity at distance asinh(mu_o / s_o)), and where
-// a kink appears, disappears or crosses another (eta < 1: the onsets of
-// total internal reflection and of the refracted horizon). The latter are
-// found by scanning the sequence of kinks on 1024 azimuths (64 missed pairs
-// of kinks that appear and vanish within pi/64, an error of 3e-8) and bisecting
-// where it changes. The albedo first lays the outer panels on a coarse grid
-// (graded toward pi/2 and each detected kink by ratio 4, down to sqrt(10
-// tolerance) at a kink, at most pi/2 long) and, where that does not
-// converge, on the fine one (ratio 2, down to sqrt(1e-3 tolerance), at most
-// 0.5 long), keeping the smaller bound.
+// Beyond that, a branch point of W = sqrt(c^2 - c_crit^2) outside
+// a panel but within a panel length of it (the panel beyond a short one, or
+// the range's end at T = 0 or T = infinity when the refracting region reaches
+// it: the quadratic's roots at T <= 0) maps that panel by v = root +- (s_a +
+// (s_b - s_a) u)^2, s = sqrt(|v - root|), so that the square root is linear in
+// u; a start within half a panel of such a root is split from the next point
+// as two square-root ends are. Where c_crit is small (eta -> 1), the side of
+// the root that refracts is graded down to c_crit / 2 (F's other
+// singularities, c = -c_crit and 0).
+//
+// The outer integral (phi in [0, pi]) is analytic except at phi = pi/2,
+// where T_c and T_r go to infinity as mu_o -> 0 (nearest singularity at
+// distance asinh(mu_o / s_o); for eta < 1 also where the total-reflection
+// circle crosses the NDF's peak about the normal, |mu_o - c_crit| / (alpha
+// s_o) and alpha mu_o / (4 s_o)), and, for eta < 1, where the sequence of
+// kinks changes. Those azimuths are known in closed form (the .cpp derives
+// them): the total-reflection circle's tangency to the ray, sc^2 = c_crit^2 -
+// mu_o^2 (the refracted horizon's two roots merge there too: sin(phi) = eta /
+// s_o is the same azimuth); its second root leaving through T = infinity, sc =
+// c_crit; the mirror's horizon crossing it, at cos(theta) = mu_o / (2
+// c_crit). Each is a square-root-type point (a kink position analytic in
+// sqrt(phi - phi*), or a max(., 0) and a sqrt(max(., 0)) crossing) or a plain
+// kink of the form max(delta, 0) analytic: the outer panels on both sides are
+// mapped quadratically. Where a Smith layer meets the point (the transmitted
+// one at the tangency, the mirror's at the crossing) they are graded toward
+// it (ratio 4) down to the layer's own azimuth scale or sqrt(10 tolerance),
+// whichever is wider; a break near pi/2 is graded to its distance from pi/2.
+// The albedo lays these panels (at most pi/2 long) and, where they do not
+// converge, the fine grid (ratio 2, down to sqrt(1e-3 tolerance), at most 0.5
+// long), keeping the smaller bound.
+//
+// GGX's node geometry and facet weights are computed by a Highway kernel
+// (integrators/dielectric_kernel.h: the same bits on every instruction set,
+// summed in node order); Beckmann's by DielectricFacetWeight.
 //
 // The bound. Level k uses n(k) = 5, 7, 10, 14, 19, 25 Gauss nodes per outer and
 // inner panel. The albedo refines its outer panels one by one: each at
@@ -72,25 +94,22 @@
 // quadratures' it is an estimate validated against the adaptive reference
 // below and an independent brute-force rule in the tests, not a theorem.
 //
-// Measured (tolerance 1e-8) against the adaptive reference at 1e-10: the
-// grid of both NDFs, both Smith forms, both lobes, eta in {1/2.42, 1/1.5,
-// 1/1.33, 0.9, 1.1, 1.33, 1.5, 2.42}, mu_o in {0.01, 0.05, 0.3, 0.7, 1},
-// r in {0.05, 0.1, 0.3, 0.6, 1}, and 300 random points (r 0.05..1, mu_o
-// 0.01..1, eta 0.4..2.5): where the reference is within its domain (all
-// but Beckmann at r <= 0.1 or mu_o = 0.01, where it is wrong by up to 1:
-// it misses the narrow lobe; at r = 0.3, mu_o = 0.01, eta = 2.42 a
-// 2 x 10^7-sample estimate agrees with this rule, not with it) real error
-// at most 1.4e-9 and 0.27 of the bound (1476 of the 1900 points); at all
-// 1900, within 0.23 of the bound of the previous rule (common levels, fine
-// grid) at tolerance 1e-8, and on 950 of them (every other) within 0.27 of
-// it at tolerance 1e-10.
-// Cost on 16 x 16 texel centres (GGX correlated glass): eta = 1.5 ~5,400
-// facet weights a point (was 9,600 with global levels), eta = 1/1.5
-// ~92,000 (was 376,000); medians 0.18 ms (was 0.34) and 9.5 ms (was 28),
-// means 0.7 ms (1.2) and 11 ms (43) on this shared machine, the same 3 of
-// 256 texels at eta = 1/1.5 ending at a bound of up to 1.4e-8 (not
-// `converged`). The facet weights (Smith's Lambda and G2 included) take
-// ~70% of the time, the kink scan ~2%.
+// Measured (tolerance 1e-8) against the adaptive reference at tolerance /
+// 1000, on 700 random points in two sets (GGX 3/4, Beckmann 1/4, both Smith
+// forms and lobes, r 0.2..1 (Beckmann 0.35..1), mu_o 0.02..1, eta 0.3..0.95
+// and 1.05..3.05, 30% of the eta < 1 points at mu_o = c_crit +- 0.01 and 15% at
+// mu_o = eta +- 0.01): error at most 0.17 of the bound, none outside, all
+// converged. On 2379 harder points (eta 1/128, 1/99.5, 1/3, 1/1.5, 0.9, 0.99,
+// 0.999, 1 -+ 1e-6, 1, 1.001, 1.01, 1.1, 1.5, 3, 99.5, 128; r 0.001..1; mu_o
+// 1e-4..1 and c_crit +- 1e-6, +- 1e-3, eta +- 1e-4) against the rule this one
+// replaced (a scan of 1024 azimuths for the outer kinks, graded toward each):
+// within the sum of both bounds at all but one point, where the old rule is
+// outside its own (at 1e-11 both give 0.82894362015; eta = 1 - 1e-6, r =
+// 0.6, mu_o = 0.3); 36 of them not converged (146 with the old rule).
+// Cost on 6 x 6 texel centres x 11 etas (GGX correlated glass, one thread,
+// CPU time on the shared build machine): 0.27 ms a texel (16,100 facet
+// weights; 0.09 ms for eta >= 1, 0.5-0.6 ms for eta < 1), against 1.8 ms
+// (50,600) for the rule before.
 //
 // Domain: alpha in [0, 1] (alpha = 0: the exact smooth values, `exact`),
 // mu_o in [0, 1] (0 the grazing limit), eta in [1/128, 128]; else
@@ -117,16 +136,17 @@ DielectricIntegral IntegrateDielectricAlbedo(NdfKind ndf, SmithForm smith, Diele
                                              double alpha, double mu_o, double eta,
                                              double tolerance);
 
-// E_avg: Gauss panels in mu graded toward 0 from min(alpha, 0.01) (ratio 2)
+// E_avg: Gauss panels in mu graded toward 0 from min(alpha, 0.01) (ratio 8)
 // and, for eta < 1, toward mu = c_crit and mu = eta from both sides and
 // toward mu = 1 (where E(mu) is not analytic; the .cpp says why), the
 // albedo at each node by IntegrateDielectricAlbedo to half the tolerance
 // with its own bound. The panels are refined one by one as the albedo's
 // are (levels 5, 7, 10, 14, 19, 25, + 4 nodes); bound 2 sum_p |V_p,k -
 // V_p,k-1| + the nodes' bounds, weighted as the rule weights them, + 1e-10.
-// Measured (GGX correlated glass, tolerance 1e-8, this machine): eta = 1/1.5
-// at r = 0.3 0.9 s (was 5.8 s with common levels on the fine grid), at r =
-// 1 3 s and converged (was 18 s, not converged); eta = 1.5 ~0.05 s.
+// The panels at mu = eta (GGX's density jumps at the facets' horizon there)
+// are also mapped quadratically. Measured (GGX correlated glass, tolerance
+// 1e-8, CPU time): eta = 1/1.5 at r = 0.5 0.11 s (1.2 s with the rule before),
+// r = 0.9 0.06 s (1.6 s), eta = 0.75 at r = 1 0.055 s (2.4 s); eta = 1.5 0.02 s.
 DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, DielectricLobes lobes,
                                               double alpha, double eta, double tolerance);
 

@@ -1,0 +1,213 @@
+// Highway compiles this file once per instruction set (foreach_target.h
+// includes it again for each); HWY_DYNAMIC_DISPATCH picks one at run time.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "integrators/dielectric_kernel.cpp"
+#include "integrators/dielectric_kernel.h"
+
+#include <hwy/foreach_target.h>  // must come before highway.h
+#include <hwy/highway.h>
+
+#include <algorithm>
+#include <cmath>
+
+HWY_BEFORE_NAMESPACE();
+namespace lutbake::kernel {
+namespace HWY_NAMESPACE {
+
+namespace hn = hwy::HWY_NAMESPACE;
+
+// G2 / G1(o) of smith.h at m in (0, 1] (lanes where `valid`; others 0),
+// with L = m Lambda(m) = a2s2 / (2 (root + m)), root = sqrt(m^2 + a2s2),
+// a2s2 = alpha^2 (1 - m)(1 + m) (ggx.h):
+//   correlated: m (mu_o + L_o) / (mu_o m + m L_o + mu_o L),
+//   separable:  m / (m + L).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V SmithRatio(D d, const DielectricConstants &k, V m, hn::Mask<D> valid) {
+  const V one = hn::Set(d, 1.0), two = hn::Set(d, 2.0), zero = hn::Zero(d);
+  const V alpha2 = hn::Set(d, k.alpha * k.alpha);
+  // Lanes outside `valid` computed at m = 1 (finite everywhere), then zeroed.
+  m = hn::IfThenElse(valid, m, one);
+  const V a2s2 = hn::Mul(alpha2, hn::Max(zero, hn::Mul(hn::Sub(one, m), hn::Add(one, m))));
+  const V root = hn::Sqrt(hn::Add(hn::Mul(m, m), a2s2));
+  const V L = hn::Div(a2s2, hn::Mul(two, hn::Add(root, m)));
+  V g;
+  if (k.smith == SmithForm::kCorrelated) {
+    const V mu_o = hn::Set(d, k.mu_o), L_o = hn::Set(d, k.L_o);
+    const V denom = hn::Add(hn::Add(hn::Mul(mu_o, m), hn::Mul(m, L_o)), hn::Mul(mu_o, L));
+    g = hn::Div(hn::Mul(m, hn::Set(d, k.mu_o + k.L_o)), denom);
+  } else {
+    g = hn::Div(m, hn::Add(m, L));
+  }
+  return hn::IfThenElseZero(valid, g);
+}
+
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V WeightLanes(D d, const DielectricConstants &k, V c, V hz, V muR) {
+  const V one = hn::Set(d, 1.0), zero = hn::Zero(d), half = hn::Set(d, 0.5), four = hn::Set(d, 4.0);
+  const double e2m1s = (k.eta - 1.0) * (k.eta + 1.0);
+  const V e2m1 = hn::Set(d, e2m1s), eta2 = hn::Set(d, k.eta * k.eta);
+  const auto visible = hn::Gt(c, zero);
+  const V cc = hn::Min(hn::Max(c, zero), one);
+  const V W2 = hn::Add(e2m1, hn::Mul(cc, cc));
+  const auto refracts = hn::Gt(W2, zero);
+  const V W = hn::Sqrt(hn::IfThenElseZero(refracts, W2));
+  // The squared denominators, 1 where the facet reflects totally (unused).
+  const V sDen = hn::Add(cc, W), pDen = hn::Add(hn::Mul(eta2, cc), W);
+  const V invS = hn::Div(one, hn::IfThenElse(refracts, hn::Mul(sDen, sDen), one));
+  const V invP = hn::Div(one, hn::IfThenElse(refracts, hn::Mul(pDen, pDen), one));
+  const V rs = hn::Mul(hn::Neg(e2m1), invS);
+  const V rp = hn::Mul(
+      hn::Mul(e2m1, hn::Sub(hn::Mul(hn::Set(d, k.eta * k.eta + 1.0), hn::Mul(cc, cc)), one)), invP);
+  const V ccW4 = hn::Mul(four, hn::Mul(cc, W));
+  const V ts = hn::Mul(ccW4, invS), tp = hn::Mul(hn::Mul(eta2, ccW4), invP);
+  const V F = hn::IfThenElse(
+      refracts,
+      hn::Min(hn::Max(hn::Mul(half, hn::Add(hn::Mul(rs, rs), hn::Mul(rp, rp))), zero), one), one);
+  const V T =
+      hn::IfThenElseZero(refracts, hn::Min(hn::Max(hn::Mul(half, hn::Add(ts, tp)), zero), one));
+  const auto reflects = hn::And(hn::Gt(muR, zero), hn::Gt(F, zero));
+  V w = hn::Mul(F, SmithRatio(d, k, hn::Min(muR, one), reflects));
+  if (k.lobes == DielectricLobes::kReflectionAndTransmission) {
+    // c - W = (1 - eta^2) / (c + W), exact at eta = 1; c + W > 0 where T > 0.
+    const auto transmits = hn::Gt(T, zero);
+    const V cpw = hn::IfThenElse(transmits, hn::Add(c, W), one);
+    const V cmw = hn::Div(hn::Neg(e2m1), cpw);
+    const V mu_t = hn::Div(hn::Sub(hn::Mul(cmw, hz), hn::Set(d, k.mu_o)), hn::Set(d, k.eta));
+    const auto below = hn::And(transmits, hn::Lt(mu_t, zero));
+    w = hn::Add(w, hn::Mul(T, SmithRatio(d, k, hn::Min(hn::Neg(mu_t), one), below)));
+  }
+  return hn::IfThenElseZero(visible, hn::Min(w, one));
+}
+
+constexpr size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
+
+void DielectricWeightsImpl(const DielectricConstants &k, const double *c, const double *hz,
+                           const double *muR, size_t n, double *w) {
+  const hn::ScalableTag<double> d;
+  const size_t lanes = hn::Lanes(d);
+  size_t i = 0;
+  for (; i + lanes <= n; i += lanes)
+    hn::StoreU(WeightLanes(d, k, hn::LoadU(d, c + i), hn::LoadU(d, hz + i), hn::LoadU(d, muR + i)),
+               d, w + i);
+  if (i < n) {
+    // The last facets padded with c = 0 (weight 0), through a buffer.
+    HWY_ALIGN double bc[kMaxLanes] = {}, bh[kMaxLanes] = {}, bm[kMaxLanes] = {}, bw[kMaxLanes];
+    for (size_t j = 0; i + j < n; ++j) {
+      bc[j] = c[i + j];
+      bh[j] = hz[i + j];
+      bm[j] = muR[i + j];
+    }
+    hn::Store(WeightLanes(d, k, hn::Load(d, bc), hn::Load(d, bh), hn::Load(d, bm)), d, bw);
+    for (size_t j = 0; i + j < n; ++j) w[i + j] = bw[j];
+  }
+}
+
+// One vector of nodes (see DielectricTerms).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V TermLanes(D d, const DielectricConstants &k, V sc, bool tail, V v, V ruleJac) {
+  const V one = hn::Set(d, 1.0), two = hn::Set(d, 2.0);
+  const V alpha = hn::Set(d, k.alpha), mu_o = hn::Set(d, k.mu_o);
+  const V q = hn::Add(one, hn::Mul(v, v)), q2 = hn::Mul(q, q);
+  V cosTheta, sinTheta, c, numerator;
+  if (tail) {
+    const V r = hn::Sqrt(hn::Add(hn::Mul(v, v), hn::Mul(alpha, alpha)));
+    cosTheta = hn::Div(v, r);
+    sinTheta = hn::Div(alpha, r);
+    c = hn::Add(hn::Mul(sc, sinTheta), hn::Mul(mu_o, cosTheta));
+    numerator = hn::Div(hn::Mul(hn::Mul(two, c), r), q2);
+  } else {
+    const V T = hn::Mul(alpha, v);
+    cosTheta = hn::Div(one, hn::Sqrt(hn::Add(one, hn::Mul(T, T))));
+    sinTheta = hn::Mul(T, cosTheta);
+    c = hn::Add(hn::Mul(sc, sinTheta), hn::Mul(mu_o, cosTheta));
+    numerator = hn::Div(hn::Mul(hn::Mul(hn::Add(hn::Mul(sc, T), mu_o), two), v), q2);
+  }
+  const V muR = hn::Sub(hn::Mul(hn::Mul(two, c), cosTheta), mu_o);
+  const V w = WeightLanes(d, k, c, cosTheta, muR);
+  return hn::Mul(ruleJac, hn::Mul(hn::Mul(numerator, hn::Set(d, k.invNorm)), w));
+}
+
+void DielectricTermsImpl(const DielectricConstants &k, double sc, bool tail, const double *v,
+                         const double *ruleJac, size_t n, double *terms) {
+  const hn::ScalableTag<double> d;
+  const size_t lanes = hn::Lanes(d);
+  const auto vsc = hn::Set(d, sc);
+  size_t i = 0;
+  for (; i + lanes <= n; i += lanes)
+    hn::StoreU(TermLanes(d, k, vsc, tail, hn::LoadU(d, v + i), hn::LoadU(d, ruleJac + i)), d,
+               terms + i);
+  if (i < n) {
+    // Padded with v = 1/2 and weight 0 (the term is then 0).
+    HWY_ALIGN double bv[kMaxLanes], bj[kMaxLanes] = {}, bt[kMaxLanes];
+    for (size_t j = 0; j < kMaxLanes; ++j) bv[j] = 0.5;
+    for (size_t j = 0; i + j < n; ++j) {
+      bv[j] = v[i + j];
+      bj[j] = ruleJac[i + j];
+    }
+    hn::Store(TermLanes(d, k, vsc, tail, hn::Load(d, bv), hn::Load(d, bj)), d, bt);
+    for (size_t j = 0; i + j < n; ++j) terms[i + j] = bt[j];
+  }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace lutbake::kernel
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace lutbake::kernel {
+
+HWY_EXPORT(DielectricWeightsImpl);
+HWY_EXPORT(DielectricTermsImpl);
+
+void DielectricTerms(const DielectricConstants &constants, double sc, bool tail, const double *v,
+                     const double *ruleJac, size_t n, double *terms) {
+  HWY_DYNAMIC_DISPATCH(DielectricTermsImpl)(constants, sc, tail, v, ruleJac, n, terms);
+}
+
+void DielectricWeights(const DielectricConstants &constants, const double *c, const double *hz,
+                       const double *muR, size_t n, double *w) {
+  HWY_DYNAMIC_DISPATCH(DielectricWeightsImpl)(constants, c, hz, muR, n, w);
+}
+
+namespace {
+
+double SmithRatioScalar(const DielectricConstants &k, double m) {
+  const double a2s2 = k.alpha * k.alpha * std::max(0.0, (1.0 - m) * (1.0 + m));
+  const double root = std::sqrt(m * m + a2s2);
+  const double L = a2s2 / (2.0 * (root + m));
+  if (k.smith == SmithForm::kCorrelated)
+    return m * (k.mu_o + k.L_o) / (k.mu_o * m + m * k.L_o + k.mu_o * L);
+  return m / (m + L);
+}
+
+}  // namespace
+
+double DielectricWeightScalar(const DielectricConstants &k, double c, double hz, double muR) {
+  if (!(c > 0.0)) return 0.0;
+  const double e2m1 = (k.eta - 1.0) * (k.eta + 1.0), eta2 = k.eta * k.eta;
+  const double cc = std::min(std::max(c, 0.0), 1.0);
+  const double W2 = e2m1 + cc * cc;
+  double F = 1.0, T = 0.0, W = 0.0;
+  if (W2 > 0.0) {
+    W = std::sqrt(W2);
+    const double sDen = cc + W, pDen = eta2 * cc + W;
+    const double invS = 1.0 / (sDen * sDen), invP = 1.0 / (pDen * pDen);
+    const double rs = -e2m1 * invS;
+    const double rp = e2m1 * ((eta2 + 1.0) * (cc * cc) - 1.0) * invP;
+    const double ccW4 = 4.0 * (cc * W);
+    const double ts = ccW4 * invS, tp = (eta2 * ccW4) * invP;
+    F = std::min(std::max(0.5 * (rs * rs + rp * rp), 0.0), 1.0);
+    T = std::min(std::max(0.5 * (ts + tp), 0.0), 1.0);
+  }
+  double w = 0.0;
+  if (muR > 0.0 && F > 0.0) w = F * SmithRatioScalar(k, std::min(muR, 1.0));
+  if (k.lobes == DielectricLobes::kReflectionAndTransmission && T > 0.0) {
+    const double cmw = -e2m1 / (c + W);
+    const double mu_t = (cmw * hz - k.mu_o) / k.eta;
+    if (mu_t < 0.0) w = w + T * SmithRatioScalar(k, std::min(-mu_t, 1.0));
+  }
+  return std::min(w, 1.0);
+}
+
+}  // namespace lutbake::kernel
+#endif

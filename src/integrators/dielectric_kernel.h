@@ -1,0 +1,60 @@
+// The innermost loop of the rough-dielectric panel quadrature
+// (dielectric_quadrature.cpp) for GGX: the facet weight of
+// DielectricFacetWeight (models/dielectric.h) at a batch of facets,
+// vectorised with Highway and dispatched at run time to the widest
+// instruction set the processor has (AVX-512, AVX2, SSE4, ... or scalar).
+//
+// Each lane computes its facet alone with the same correctly rounded
+// operations (additions, multiplications, divisions, square roots, min and
+// max; nothing fused: -ffp-contract=off), so the weights, and the sums the
+// caller forms from them in a fixed order, are the same bits on every
+// instruction set and thread count.
+#pragma once
+
+#include <cstddef>
+
+#include "lutbake/models/dielectric.h"
+#include "lutbake/models/smith.h"
+
+namespace lutbake::kernel {
+
+// What the facets of one texel share (GGX).
+struct DielectricConstants {
+  double alpha = 1.0;
+  double eta = 1.5;
+  double mu_o = 1.0;
+  double L_o = 0.0;      // mu_o Lambda(mu_o)
+  double invNorm = 1.0;  // 1 / (mu_o + L_o)
+  SmithForm smith = SmithForm::kCorrelated;
+  DielectricLobes lobes = DielectricLobes::kReflectionAndTransmission;
+};
+
+// w[k] = the facet weight at the facet with c = o.h = c[k], h.z = hz[k] and
+// the mirror's mu_r = muR[k] (the caller's stable forms), for k < n:
+//   F(c) G2(o, i_r)/G1(o) [mu_r > 0] + (1 - F(c)) G2(o, i_t)/G1(o) [mu_t < 0]
+// (the second term with transmission only), at most 1; 0 where c <= 0.
+// F and 1 - F as DielectricFresnel writes them, mu_t = ((c - W) h.z - mu_o)
+// / eta with c - W = (1 - eta^2) / (c + W), G2 / G1 and Lambda as smith.h and
+// ggx.h write them (the two divisions by the Fresnel denominators' squares
+// shared by r and t). Agrees with DielectricFacetWeight to a few ulps.
+void DielectricWeights(const DielectricConstants &constants, const double *c, const double *hz,
+                       const double *muR, size_t n, double *w);
+
+// The quadrature's terms at the nodes of one azimuth (sc = s_o cos(phi)):
+// node k at the variable v[k] with rule weight x jacobian ruleJac[k] gives
+//   terms[k] = ruleJac[k] (measure w),  measure = (c / cos(theta)) d(xi)/dv / (mu_o + L_o),
+// in GGX's core variable x = T / alpha (tail = false: T = alpha x, cos(theta)
+// = 1 / sqrt(1 + T^2), sin(theta) = T cos(theta), measure numerator (sc T +
+// mu_o) 2 x / (1 + x^2)^2) or its tail variable w = alpha / T (tail = true:
+// r = sqrt(w^2 + alpha^2), cos(theta) = w / r, sin(theta) = alpha / r,
+// numerator 2 c r / (1 + w^2)^2), c = sc sin(theta) + mu_o cos(theta),
+// mu_r = 2 c cos(theta) - mu_o and w the facet weight above.
+void DielectricTerms(const DielectricConstants &constants, double sc, bool tail, const double *v,
+                     const double *ruleJac, size_t n, double *terms);
+
+// The same, one facet at a time in plain C++ (the reference the vector
+// lanes are tested against, and the weights the kernel's lanes reproduce).
+double DielectricWeightScalar(const DielectricConstants &constants, double c, double hz,
+                              double muR);
+
+}  // namespace lutbake::kernel
