@@ -1,7 +1,8 @@
 // Bakes E and dfg in-process with lutbake's library and prints each file's
 // bound as stored. Usage: bake_in_process OUTPUT_DIRECTORY
-#include <iostream>
 #include <lutbake/lutbake.h>
+
+#include <iostream>
 
 int main(int argc, char **argv) {
   if (argc != 2) {

@@ -3,6 +3,8 @@
 // (tables by name, or a plan's tables), check the sizes and estimators,
 // open the output transaction, bake and write each table, add the helper
 // headers and shader files, commit.
+#include "lutbake/api/bake.h"
+
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -15,7 +17,6 @@
 #include <thread>
 
 #include "bake_internal.h"
-#include "lutbake/api/bake.h"
 #include "lutbake/api/names.h"
 #include "lutbake/api/plan.h"
 #include "lutbake/formats/format.h"
@@ -95,9 +96,10 @@ void SelectPlannedTables(const std::vector<std::string> &wanted, BakePlan *plan)
                     " asks for tables the plan leaves out; nothing written:\n" + missing +
                     "Drop them from --tables, or change the scene, manifest or --no-ibl / "
                     "--no-compensation (see lutbake plan).");
-  plan->tables.erase(std::remove_if(plan->tables.begin(), plan->tables.end(),
-                                    [&](const PlannedTable &t) { return !isWanted(*t.definition); }),
-                     plan->tables.end());
+  plan->tables.erase(
+      std::remove_if(plan->tables.begin(), plan->tables.end(),
+                     [&](const PlannedTable &t) { return !isWanted(*t.definition); }),
+      plan->tables.end());
   // The closed-form F_avg header stands for the Fresnel-average table.
   if (std::none_of(wanted.begin(), wanted.end(), [](const std::string &name) {
         return TableNamed(name).Role() == PlanRole::kFresnelAverage;
@@ -108,9 +110,9 @@ void SelectPlannedTables(const std::vector<std::string> &wanted, BakePlan *plan)
 JobList PlanJobs(const BakeRequest &r, const BakeSettings &settings) {
   // Options that choose models, which a plan decides instead. (--tables is
   // accepted: with a plan it selects among the planned tables.)
-  for (const auto &[flag, given] : {std::pair{"--ndf", r.ndf.has_value()},
-                                    std::pair{"--smith", r.smith.has_value()},
-                                    std::pair{"--fresnel", r.fresnel.has_value()}})
+  for (const auto &[flag, given] :
+       {std::pair{"--ndf", r.ndf.has_value()}, std::pair{"--smith", r.smith.has_value()},
+        std::pair{"--fresnel", r.fresnel.has_value()}})
     if (given)
       throw UsageError(std::string(flag) +
                        " cannot be combined with --scene or --manifest: the plan chooses the "
@@ -128,7 +130,8 @@ JobList PlanJobs(const BakeRequest &r, const BakeSettings &settings) {
   JobList list;
   if (plan.empty()) {
     list.planNeedsNothing = true;
-    for (const OmittedTable &t : plan.omitted) list.nothingToBake.push_back(t.name + ": " + t.reason);
+    for (const OmittedTable &t : plan.omitted)
+      list.nothingToBake.push_back(t.name + ": " + t.reason);
     return list;
   }
   std::string sources;
@@ -235,8 +238,10 @@ std::vector<const TableFormat *> FormatsOf(const BakeRequest &r) {
   for (const std::string &name : names) {
     const TableFormat *format = FindFormat(name);
     if (!format || !format->bakeFormat)
-      throw UsageError("--format '" + name + "' is not accepted; accepted: a comma-separated "
-                       "subset of " + JoinNames(FormatNames()));
+      throw UsageError("--format '" + name +
+                       "' is not accepted; accepted: a comma-separated "
+                       "subset of " +
+                       JoinNames(FormatNames()));
     // png8 and png16 both write T.png, ktx2 and ktx2-half T.ktx2, ...
     for (const TableFormat *earlier : formats)
       if (earlier->extension == format->extension)
@@ -281,9 +286,9 @@ void BakeJobInto(Run &run, const BakeJob &job) {
   for (const TableFormat *format : run.formats) {
     if (r.cancellation) r.cancellation->ThrowIfCancelled();
     const std::unique_ptr<TableWriter> writer = format->makeWriter();
-    const std::string path = run.output.Write(job.name + format->extension, [&](const std::string &temporary) {
-      writer->Write(table, temporary, run.writeOptions);
-    });
+    const std::string path = run.output.Write(
+        job.name + format->extension,
+        [&](const std::string &temporary) { writer->Write(table, temporary, run.writeOptions); });
     const BoundSummary bounds = SummarizeStoredBounds(table, format->storage(run.writeOptions));
     run.result.files.push_back({path, job.name, format->name, bounds.max, bounds.rms});
     baked.files.push_back(path);
@@ -295,9 +300,10 @@ void BakeJobInto(Run &run, const BakeJob &job) {
   }
   if (r.errorMaps) {
     if (r.cancellation) r.cancellation->ThrowIfCancelled();
-    const std::string path = run.output.Write(job.name + ".err.exr", [&](const std::string &temporary) {
-      MakeExrWriter()->Write(ErrorMapOf(table), temporary, run.writeOptions);
-    });
+    const std::string path =
+        run.output.Write(job.name + ".err.exr", [&](const std::string &temporary) {
+          MakeExrWriter()->Write(ErrorMapOf(table), temporary, run.writeOptions);
+        });
     run.result.files.push_back({path, job.name, "error-map", 0.0, 0.0});
     baked.files.push_back(path);
   }
@@ -358,30 +364,36 @@ void WriteHelperFiles(Run &run) {
     const TableRelations relations = job.table->Relations();
     if (!headers || !relations.kullaConty) continue;
     const std::string suffix = job.name.substr(std::string(job.table->Name()).size());
-    const bool averaged = std::any_of(run.list.jobs.begin(), run.list.jobs.end(), [&](const BakeJob &other) {
-      return other.table->Name() == relations.averageOf && other.name == relations.averageOf + suffix;
-    });
+    const bool averaged =
+        std::any_of(run.list.jobs.begin(), run.list.jobs.end(), [&](const BakeJob &other) {
+          return other.table->Name() == relations.averageOf &&
+                 other.name == relations.averageOf + suffix;
+        });
     if (!averaged) continue;
-    const std::string path = run.output.Write("kulla_conty" + suffix + ".h", [&](const std::string &temporary) {
-      WriteKullaContyHeader(
-          temporary, run.writeOptions, suffix,
-          FunctionFileMetadata(
-              run, {{"helpers", "Kulla-Conty f_ms and F_ms over E" + suffix + " and Eavg" + suffix}}));
-    });
+    const std::string path =
+        run.output.Write("kulla_conty" + suffix + ".h", [&](const std::string &temporary) {
+          WriteKullaContyHeader(
+              temporary, run.writeOptions, suffix,
+              FunctionFileMetadata(run, {{"helpers", "Kulla-Conty f_ms and F_ms over E" + suffix +
+                                                         " and Eavg" + suffix}}));
+        });
     run.result.files.push_back({path, "", "helper", 0.0, 0.0});
   }
   // Shader functions: lutbake.<ext> per language, committed with the tables.
   for (const std::string &name : run.request.shaders) {
     ShaderLanguage language = ShaderLanguage::kGlsl;
     if (!ParseShaderLanguage(name, &language))
-      throw UsageError("--shader '" + name + "' is not accepted; accepted: a comma-separated "
-                       "subset of " + JoinNames(ShaderLanguageNames()));
-    const std::string path = run.output.Write(std::string("lutbake") + ShaderExtension(language),
-                                              [&](const std::string &temporary) {
-      WriteShaderCode(temporary, language, run.shapes,
-                      FunctionFileMetadata(run, {{"shader", std::string(ToString(language)) +
-                                                                " functions of the baked tables"}}));
-    });
+      throw UsageError("--shader '" + name +
+                       "' is not accepted; accepted: a comma-separated "
+                       "subset of " +
+                       JoinNames(ShaderLanguageNames()));
+    const std::string path = run.output.Write(
+        std::string("lutbake") + ShaderExtension(language), [&](const std::string &temporary) {
+          WriteShaderCode(
+              temporary, language, run.shapes,
+              FunctionFileMetadata(run, {{"shader", std::string(ToString(language)) +
+                                                        " functions of the baked tables"}}));
+        });
     run.result.files.push_back({path, "", "shader", 0.0, 0.0});
   }
 }
@@ -496,8 +508,7 @@ BakeResult Bake(const BakeRequest &r) {
   result.foreignFiles = output.foreignFiles();
   result.removedFiles = output.removedFiles();
   result.files.push_back({output.PathOf(kSetManifestName), "", "set", 0.0, 0.0});
-  result.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.json = SummaryJson(result);
   return result;
 }

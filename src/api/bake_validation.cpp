@@ -61,18 +61,37 @@ void RequireFormat(const BakeRequest &r, const std::string &option, const std::s
 
 // C++'s keywords, which no namespace may be called.
 bool IsCppKeyword(const std::string &word) {
-  static const std::set<std::string> keywords = {
-      "alignas", "alignof", "and", "and_eq", "asm", "auto", "bitand", "bitor", "bool", "break",
-      "case", "catch", "char", "char8_t", "char16_t", "char32_t", "class", "compl", "concept",
-      "const", "consteval", "constexpr", "constinit", "const_cast", "continue", "co_await",
-      "co_return", "co_yield", "decltype", "default", "delete", "do", "double", "dynamic_cast",
-      "else", "enum", "explicit", "export", "extern", "false", "float", "for", "friend", "goto",
-      "if", "inline", "int", "long", "mutable", "namespace", "new", "noexcept", "not", "not_eq",
-      "nullptr", "operator", "or", "or_eq", "private", "protected", "public", "register",
-      "reinterpret_cast", "requires", "return", "short", "signed", "sizeof", "static",
-      "static_assert", "static_cast", "struct", "switch", "template", "this", "thread_local",
-      "throw", "true", "try", "typedef", "typeid", "typename", "union", "unsigned", "using",
-      "virtual", "void", "volatile", "wchar_t", "while", "xor", "xor_eq"};
+  static const std::set<std::string> keywords = {"alignas",       "alignof",     "and",
+                                                 "and_eq",        "asm",         "auto",
+                                                 "bitand",        "bitor",       "bool",
+                                                 "break",         "case",        "catch",
+                                                 "char",          "char8_t",     "char16_t",
+                                                 "char32_t",      "class",       "compl",
+                                                 "concept",       "const",       "consteval",
+                                                 "constexpr",     "constinit",   "const_cast",
+                                                 "continue",      "co_await",    "co_return",
+                                                 "co_yield",      "decltype",    "default",
+                                                 "delete",        "do",          "double",
+                                                 "dynamic_cast",  "else",        "enum",
+                                                 "explicit",      "export",      "extern",
+                                                 "false",         "float",       "for",
+                                                 "friend",        "goto",        "if",
+                                                 "inline",        "int",         "long",
+                                                 "mutable",       "namespace",   "new",
+                                                 "noexcept",      "not",         "not_eq",
+                                                 "nullptr",       "operator",    "or",
+                                                 "or_eq",         "private",     "protected",
+                                                 "public",        "register",    "reinterpret_cast",
+                                                 "requires",      "return",      "short",
+                                                 "signed",        "sizeof",      "static",
+                                                 "static_assert", "static_cast", "struct",
+                                                 "switch",        "template",    "this",
+                                                 "thread_local",  "throw",       "true",
+                                                 "try",           "typedef",     "typeid",
+                                                 "typename",      "union",       "unsigned",
+                                                 "using",         "virtual",     "void",
+                                                 "volatile",      "wchar_t",     "while",
+                                                 "xor",           "xor_eq"};
   return keywords.count(word) > 0;
 }
 
@@ -84,7 +103,8 @@ std::string NamespaceProblem(const std::string &name) {
     const size_t end = name.find("::", start);
     const std::string part = name.substr(start, end == std::string::npos ? end : end - start);
     if (IsCppKeyword(part))
-      return "'" + name + "': " + part + " is a C++ keyword; accepted: a C++ namespace name (e.g. "
+      return "'" + name + "': " + part +
+             " is a C++ keyword; accepted: a C++ namespace name (e.g. "
              "my_engine::luts)";
     if (end == std::string::npos) return "";
     start = end + 2;
@@ -101,8 +121,8 @@ void ValidateApplicability(const BakeRequest &r) {
   if (r.binType) RequireFormat(r, "bin-type", "bin");
   // With a plan the plan picks the tables (and refuses the model options).
   if (!r.scenes.empty() || !r.manifests.empty()) return;
-  const std::vector<std::string> names = r.tables.value_or(
-      std::vector<std::string>{"E", "Eavg", "Favg", "dfg"});
+  const std::vector<std::string> names =
+      r.tables.value_or(std::vector<std::string>{"E", "Eavg", "Favg", "dfg"});
   std::vector<const TableDefinition *> asked;
   for (const std::string &name : names) asked.push_back(&TableNamed(name));
   const std::string asText = JoinList(names);
@@ -116,11 +136,13 @@ void ValidateApplicability(const BakeRequest &r) {
     if (given) RequireTableUsing(asked, asText, option, option, HasModelOption);
   if (r.etaSize > 0) RequireTableUsing(asked, asText, "eta-size", "", HasEtaAxis);
   const SamplingRequest &s = r.sampling;
-  const std::pair<const char *, bool> sampling[] = {
-      {"estimator", s.estimator.has_value()}, {"samples", s.samples > 0},
-      {"replicates", s.replicates > 0},       {"tolerance", s.tolerance > 0.0},
-      {"sampling-only", s.samplingOnly},      {"max-samples", s.maxSamples.has_value()},
-      {"seed", s.seed.has_value()}};
+  const std::pair<const char *, bool> sampling[] = {{"estimator", s.estimator.has_value()},
+                                                    {"samples", s.samples > 0},
+                                                    {"replicates", s.replicates > 0},
+                                                    {"tolerance", s.tolerance > 0.0},
+                                                    {"sampling-only", s.samplingOnly},
+                                                    {"max-samples", s.maxSamples.has_value()},
+                                                    {"seed", s.seed.has_value()}};
   for (const auto &[option, given] : sampling)
     if (given) RequireTableUsing(asked, asText, option, "", IsSampled);
 }

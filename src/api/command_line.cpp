@@ -41,8 +41,7 @@ void AddModels(const BakeRequest &r, Line &line) {
   if (r.ndf) line.Add("--ndf", std::string(ToString(*r.ndf)));
   if (r.smith) line.Add("--smith", std::string(ToString(*r.smith)));
   if (r.fresnel) line.Add("--fresnel", std::string(ToString(*r.fresnel)));
-  if (r.sheenVisibility)
-    line.Add("--sheen-visibility", std::string(ToString(*r.sheenVisibility)));
+  if (r.sheenVisibility) line.Add("--sheen-visibility", std::string(ToString(*r.sheenVisibility)));
   if (r.sheenAlpha) line.Add("--sheen-alpha", std::string(ToString(*r.sheenAlpha)));
 }
 

@@ -78,8 +78,9 @@ std::vector<const PresetTexture *> ChosenTextures(const BakeRequest &r, const Pr
     accepted += (accepted.empty() ? "" : ", ") + t.file;
   const std::string given = JoinList(wanted);
   if (wanted.empty() || std::find(wanted.begin(), wanted.end(), "") != wanted.end())
-    throw UsageError("--files '" + given + "' is empty or has an empty name; the files of --preset " +
-                     preset.name + ": " + accepted);
+    throw UsageError("--files '" + given +
+                     "' is empty or has an empty name; the files of --preset " + preset.name +
+                     ": " + accepted);
   for (size_t k = 0; k < wanted.size(); ++k) {
     const std::string &file = wanted[k];
     if (!IsFileOf(preset, file))
@@ -127,8 +128,8 @@ nlohmann::ordered_json ModelJson(const PresetTexture &texture) {
 }
 
 // preset.json's entry of one written texture.
-nlohmann::ordered_json FileJson(const PresetTexture &texture, const Table &table,
-                                ValueType storage, const BoundSummary &bounds) {
+nlohmann::ordered_json FileJson(const PresetTexture &texture, const Table &table, ValueType storage,
+                                const BoundSummary &bounds) {
   nlohmann::ordered_json f;
   f["file"] = texture.file;
   f["format"] = texture.format;
@@ -139,7 +140,8 @@ nlohmann::ordered_json FileJson(const PresetTexture &texture, const Table &table
   f["channelCount"] = table.channels;
   nlohmann::ordered_json axes = nlohmann::ordered_json::array();
   static const char *const kWhich[] = {"x", "y", "z"};
-  for (size_t a = 0; a < texture.axes.size(); ++a) axes.push_back(AxisJson(texture.axes[a], kWhich[a]));
+  for (size_t a = 0; a < texture.axes.size(); ++a)
+    axes.push_back(AxisJson(texture.axes[a], kWhich[a]));
   f["axes"] = axes;
   f["memoryOrder"] = table.is3D()   ? "rows of x, then y, slices of z outermost; channels "
                                       "interleaved"
@@ -322,12 +324,11 @@ void HoldToIntegral(const std::string &dir, const PresetTexture &texture, const 
   if (stored.width() != exact.width() ||
       stored.height() * stored.depth() != exact.height() * exact.depth() ||
       stored.values.size() != exact.values.size())
-    throw IoError("holds " + std::to_string(stored.width()) + " x " +
-                  std::to_string(stored.height() * stored.depth()) + " x " +
-                  std::to_string(stored.channels) + " values; the preset has " +
-                  std::to_string(exact.width()) + " x " +
-                  std::to_string(exact.height() * exact.depth()) + " x " +
-                  std::to_string(exact.channels));
+    throw IoError(
+        "holds " + std::to_string(stored.width()) + " x " +
+        std::to_string(stored.height() * stored.depth()) + " x " + std::to_string(stored.channels) +
+        " values; the preset has " + std::to_string(exact.width()) + " x " +
+        std::to_string(exact.height() * exact.depth()) + " x " + std::to_string(exact.channels));
   // PNG and KTX2 keep two channels as RGB / RG: compare the ones both hold.
   for (size_t i = 0; i < exact.values.size(); ++i) {
     const double d = std::abs(stored.values[i] - exact.values[i]);

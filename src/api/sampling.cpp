@@ -12,9 +12,9 @@ void ApplySampling(const SamplingRequest &request, BakeSettings *s) {
   s->estimator = samplingAsked ? Estimator::kVisibleNormal : Estimator::kQuadrature;
   if (request.estimator) s->estimator = *request.estimator;
   s->tolerance = request.tolerance;
-  s->samples = request.samples      ? request.samples
-               : tolerance          ? kToleranceStartSamples
-                                    : kDefaultSamples;
+  s->samples = request.samples ? request.samples
+               : tolerance     ? kToleranceStartSamples
+                               : kDefaultSamples;
   s->replicates = request.replicates ? request.replicates
                   : tolerance        ? kToleranceReplicates
                                      : kDefaultReplicates;

@@ -3,8 +3,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "format_list.h"
 #include "file_io.h"
+#include "format_list.h"
 #include "lutbake/formats/binary_format.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/tables/table_definition.h"

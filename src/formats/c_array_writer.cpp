@@ -14,8 +14,8 @@
 // (ReadSourceTable).
 #include <sstream>
 
-#include "format_list.h"
 #include "file_io.h"
+#include "format_list.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/tables/storage.h"
 #include "source_text.h"

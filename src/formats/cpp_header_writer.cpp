@@ -10,8 +10,8 @@
 #include <cstdio>
 #include <sstream>
 
-#include "format_list.h"
 #include "file_io.h"
+#include "format_list.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/tables/table_definition.h"
 
@@ -441,12 +441,15 @@ void WriteKullaContyHeader(const std::string &path, const WriteOptions &options,
 std::unique_ptr<TableWriter> MakeCppHeaderWriter() { return std::make_unique<CppHeaderWriter>(); }
 
 std::vector<TableFormat> CppHeaderFormats() {
-  return {{"header", ".h",
+  return {{"header",
+           ".h",
            [](const WriteOptions &o) {
              return o.headerStorage == HeaderStorage::kHalf ? ValueType::kHalf
-                                                             : ValueType::kFloat32;
+                                                            : ValueType::kFloat32;
            },
-           MakeCppHeaderWriter, {}, true}};
+           MakeCppHeaderWriter,
+           {},
+           true}};
 }
 
 }  // namespace lutbake

@@ -14,8 +14,8 @@
 #include <cstdio>
 #include <sstream>
 
-#include "format_list.h"
 #include "file_io.h"
+#include "format_list.h"
 #include "lutbake/formats/source_formats.h"
 #include "lutbake/tables/table_definition.h"
 #include "source_text.h"
@@ -151,10 +151,9 @@ std::vector<TableFormat> JsFormats() {
   for (const bool typescript : {false, true})
     for (const ValueType type : {ValueType::kFloat32, ValueType::kHalf}) {
       const std::string stem = typescript ? "ts" : "js";
-      records.push_back({type == ValueType::kHalf ? stem + "-half" : stem, "." + stem,
-                         FixedStorage(type),
-                         [type, typescript] { return MakeJsWriter(type, typescript); },
-                         ReadSourceTable, true});
+      records.push_back(
+          {type == ValueType::kHalf ? stem + "-half" : stem, "." + stem, FixedStorage(type),
+           [type, typescript] { return MakeJsWriter(type, typescript); }, ReadSourceTable, true});
     }
   return records;
 }

@@ -207,8 +207,8 @@ Table ReadKtx2Table(const std::string &path) {
 
 std::vector<TableFormat> Ktx2Formats() {
   std::vector<TableFormat> records;
-  for (const auto &[name, storage] : {std::pair{"ktx2", ValueType::kFloat32},
-                                      std::pair{"ktx2-half", ValueType::kHalf}}) {
+  for (const auto &[name, storage] :
+       {std::pair{"ktx2", ValueType::kFloat32}, std::pair{"ktx2-half", ValueType::kHalf}}) {
     const ValueType type = storage;
     records.push_back({name, ".ktx2", FixedStorage(type), [type] { return MakeKtx2Writer(type); },
                        ReadKtx2Table, true});

@@ -238,7 +238,8 @@ void OutputTransaction::CommitSet() {
   manifest["files"] = newNames;
   const std::string manifestText = manifest.dump(2) + "\n";
   const auto isNew = [&](const std::string &n) {
-    return n == kSetManifestName || std::find(newNames.begin(), newNames.end(), n) != newNames.end();
+    return n == kSetManifestName ||
+           std::find(newNames.begin(), newNames.end(), n) != newNames.end();
   };
   // What the directory holds besides the new set: the previous set's other
   // files (to go) and everything else (to stay, untouched).
@@ -301,8 +302,8 @@ bool OutputTransaction::TryExchange(const std::vector<std::string> &oldSetNames,
   // on is named by it (RetireSibling).
   {
     std::FILE *file = std::fopen((sibling / kSetManifestName).c_str(), "wb");
-    bool ok = file && std::fwrite(manifestText.data(), 1, manifestText.size(), file) ==
-                          manifestText.size();
+    bool ok = file &&
+              std::fwrite(manifestText.data(), 1, manifestText.size(), file) == manifestText.size();
     ok = ok && std::fflush(file) == 0 && ::fsync(::fileno(file)) == 0;
     if (file && std::fclose(file) != 0) ok = false;
     if (!ok) return abandon();

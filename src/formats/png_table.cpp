@@ -24,8 +24,8 @@
 #include <fstream>
 #include <iterator>
 
-#include "format_list.h"
 #include "file_io.h"
+#include "format_list.h"
 #include "lutbake/formats/table_reader.h"
 #include "lutbake/formats/writer.h"
 

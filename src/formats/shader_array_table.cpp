@@ -20,8 +20,8 @@
 // is a var<private>. Metal: it includes metal_stdlib.
 #include <sstream>
 
-#include "format_list.h"
 #include "file_io.h"
+#include "format_list.h"
 #include "lutbake/formats/source_formats.h"
 #include "source_text.h"
 

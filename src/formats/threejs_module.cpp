@@ -10,8 +10,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "format_list.h"
 #include "file_io.h"
+#include "format_list.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/tables/storage.h"
 #include "source_text.h"

@@ -77,8 +77,9 @@ TEST(OutputSet, ReplacesThePreviousSetAndKeepsForeignFiles) {
   // directory either way.
   std::printf("exchanged: %s\n", exchanged ? "yes" : "no (file by file)");
   for (const auto &entry : fs::directory_iterator(dir.parent_path()))
-    EXPECT_EQ(entry.path().filename().string().find("." + dir.filename().string() + ".lutbake-set-"),
-              std::string::npos);
+    EXPECT_EQ(
+        entry.path().filename().string().find("." + dir.filename().string() + ".lutbake-set-"),
+        std::string::npos);
   fs::remove_all(dir);
 }
 
@@ -110,8 +111,7 @@ TEST(OutputSet, KillsNeverLeaveAMixedOrPartialSet) {
   const fs::path dir = Scratch("kills");
   const auto namesOf = [](int run) {
     std::vector<std::string> names;
-    for (int k = 0; k < 40; ++k)
-      names.push_back("t" + std::to_string(k + (run % 2) * 20) + ".bin");
+    for (int k = 0; k < 40; ++k) names.push_back("t" + std::to_string(k + (run % 2) * 20) + ".bin");
     return names;
   };
   CommitSet(dir, namesOf(0), "run0");

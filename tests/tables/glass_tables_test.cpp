@@ -250,7 +250,8 @@ TEST(GlassTables, CheckHoldsSliceLimitAndReciprocity) {
     for (const CheckReport *report : {&r, &a})
       for (const CheckResult &c : report->results)
         EXPECT_NE(c.status, CheckStatus::kFail) << c.subject << " " << c.check << ": " << c.detail;
-    for (const char *t : {"glass_E", "spec_E"}) EXPECT_EQ(statusOf(r, t, "slice"), CheckStatus::kPass) << t;
+    for (const char *t : {"glass_E", "spec_E"})
+      EXPECT_EQ(statusOf(r, t, "slice"), CheckStatus::kPass) << t;
     for (const char *t : {"glass_Eavg", "spec_Eavg"})
       EXPECT_EQ(statusOf(a, t, "slice"), CheckStatus::kPass) << t;
     EXPECT_EQ(statusOf(r, "glass_E", "limit"), CheckStatus::kPass);

@@ -15,12 +15,12 @@ struct SamplingRequest {
   // samples, replicates or samplingOnly ask for sampling: then visible-normal
   // sampling.
   std::optional<Estimator> estimator;
-  uint64_t samples = 0;   // 0: kDefaultSamples, or kToleranceStartSamples with a tolerance
-  int replicates = 0;     // 0: kDefaultReplicates, or kToleranceReplicates with a tolerance
-  double tolerance = 0;   // 0: no tolerance run
-  bool samplingOnly = false;               // tolerance runs: never switch to the quadrature
-  std::optional<uint64_t> maxSamples;      // tolerance runs with samplingOnly: kDefaultMaxSamples
-  std::optional<uint64_t> seed;            // 0 when unset
+  uint64_t samples = 0;       // 0: kDefaultSamples, or kToleranceStartSamples with a tolerance
+  int replicates = 0;         // 0: kDefaultReplicates, or kToleranceReplicates with a tolerance
+  double tolerance = 0;       // 0: no tolerance run
+  bool samplingOnly = false;  // tolerance runs: never switch to the quadrature
+  std::optional<uint64_t> maxSamples;  // tolerance runs with samplingOnly: kDefaultMaxSamples
+  std::optional<uint64_t> seed;        // 0 when unset
 };
 
 // Copies the request into `settings` (estimator, samples, replicates,
