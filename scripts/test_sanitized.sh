@@ -23,7 +23,7 @@ cmake --build build-asan -j"$(nproc)" --target lutbake_tests lutbake_image_tests
 # (compiler- and install-bound), the regeneration of luts/, and the table
 # and quadrature suites (seconds each at -O1 with ASan). The binary itself
 # runs under the sanitizers in the comparison below.
-SUBSET='^(FuzzCorpus|HostileInput|TableReader|Lookup|BinaryWriter|ExrWriter|PngTable|Ktx2Table|DdsTable|ThreeDTable|AtomicOutput|SceneReader|Manifest|Plan|Storage|Sobol|PointBlocks|GaussLegendre|Fresnel|Ndf|SheenModel|DielectricModel|OrenNayar|Eon|Phong|BlinnPhong|Furnace|ReferenceIntegrator|VndfKernel|ChiSquare)\.'
+SUBSET='^(FuzzCorpus|HostileInput|TableReader|Lookup|BinaryWriter|ExrWriter|PngTable|Ktx2Table|DdsTable|ThreeDTable|AtomicOutput|OutputSet|SceneReader|Manifest|Plan|Storage|Sobol|PointBlocks|GaussLegendre|Fresnel|Ndf|SheenModel|DielectricModel|OrenNayar|Eon|Phong|BlinnPhong|Furnace|ReferenceIntegrator|VndfKernel|ChiSquare)\.'
 export ASAN_OPTIONS=halt_on_error=1:detect_leaks=1
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 ctest --test-dir build-asan -j"$(nproc)" --output-on-failure -R "$SUBSET" "$@"
