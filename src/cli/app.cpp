@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "lutbake/api/names.h"
 #include "lutbake/tables/bake.h"
 
 namespace lutbake::cli {
@@ -56,13 +57,14 @@ int ReportParseError(LutbakeApp &cli, const CLI::ParseError &e, int argc, const 
   // No command recognised: CLI11 says only that one is required; name
   // what was given instead and the commands there are.
   if (app.get_subcommands().empty()) {
-    std::string commands;
-    for (const CLI::App *sub : app.get_subcommands({}))
-      commands += (commands.empty() ? "" : ", ") + sub->get_name();
+    std::vector<std::string> commands;
+    for (const CLI::App *sub : app.get_subcommands({})) commands.push_back(sub->get_name());
     if (argc > 1)
-      std::cerr << "lutbake: '" << argv[1] << "' is not a command; accepted: " << commands << "\n";
+      std::cerr << "lutbake: '" << argv[1]
+                << "' is not a command; accepted: " << JoinNames(commands)
+                << DidYouMean(argv[1], commands) << "\n";
     else
-      std::cerr << "lutbake: a command is required; accepted: " << commands << "\n";
+      std::cerr << "lutbake: a command is required; accepted: " << JoinNames(commands) << "\n";
     std::cerr << "Run 'lutbake COMMAND --help' for the accepted options.\n";
     return 2;
   }

@@ -31,7 +31,7 @@ CLI::Validator OneOf(std::vector<std::string> names) {
       [names, accepted](std::string &value) -> std::string {
         for (const std::string &n : names)
           if (value == n) return {};
-        return "'" + value + "' is not accepted; accepted: " + accepted;
+        return "'" + value + "' is not accepted; accepted: " + accepted + DidYouMean(value, names);
       },
       "one of: " + accepted);
 }
@@ -47,7 +47,8 @@ CLI::Validator ListOf(std::vector<std::string> names) {
           for (const std::string &n : names) known = known || items[i] == n;
           if (!known)
             return "'" + value + "' names '" + items[i] +
-                   "', which is not accepted; accepted: a comma-separated subset of " + accepted;
+                   "', which is not accepted; accepted: a comma-separated subset of " + accepted +
+                   DidYouMean(items[i], names);
           for (size_t j = 0; j < i; ++j)
             if (items[j] == items[i]) return "'" + value + "' names '" + items[i] + "' twice";
         }
