@@ -79,15 +79,30 @@ bool IsCppKeyword(const std::string &word) {
 }  // namespace
 
 std::string NamespaceProblem(const std::string &name) {
-  size_t start = 0;
+  // Identifiers separated by "::", none of them a keyword.
+  bool ok = !name.empty(), start = true;
+  for (size_t i = 0; ok && i < name.size(); ++i) {
+    const char c = name[i];
+    if (c == ':' && i + 1 < name.size() && name[i + 1] == ':' && !start) {
+      ++i;
+      start = true;
+      continue;
+    }
+    const bool alpha = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+    ok = alpha || (c >= '0' && c <= '9' && !start);
+    start = false;
+  }
+  if (!ok || start) return "'" + name + "' is not a C++ namespace name (e.g. my_engine::luts)";
+  size_t begin = 0;
   while (true) {
-    const size_t end = name.find("::", start);
-    const std::string part = name.substr(start, end == std::string::npos ? end : end - start);
+    const size_t end = name.find("::", begin);
+    const std::string part = name.substr(begin, end == std::string::npos ? end : end - begin);
     if (IsCppKeyword(part))
-      return "'" + name + "': " + part + " is a C++ keyword; accepted: a C++ namespace name (e.g. "
+      return "'" + name + "': " + part +
+             " is a C++ keyword; accepted: a C++ namespace name (e.g. "
              "my_engine::luts)";
     if (end == std::string::npos) return "";
-    start = end + 2;
+    begin = end + 2;
   }
 }
 
@@ -101,8 +116,8 @@ void ValidateApplicability(const BakeRequest &r) {
   if (r.binType) RequireFormat(r, "bin-type", "bin");
   // With a plan the plan picks the tables (and refuses the model options).
   if (!r.scenes.empty() || !r.manifests.empty()) return;
-  const std::vector<std::string> names = r.tables.value_or(
-      std::vector<std::string>{"E", "Eavg", "Favg", "dfg"});
+  const std::vector<std::string> names =
+      r.tables.value_or(std::vector<std::string>{"E", "Eavg", "Favg", "dfg"});
   std::vector<const TableDefinition *> asked;
   for (const std::string &name : names) asked.push_back(&TableNamed(name));
   const std::string asText = JoinList(names);
@@ -116,11 +131,13 @@ void ValidateApplicability(const BakeRequest &r) {
     if (given) RequireTableUsing(asked, asText, option, option, HasModelOption);
   if (r.etaSize > 0) RequireTableUsing(asked, asText, "eta-size", "", HasEtaAxis);
   const SamplingRequest &s = r.sampling;
-  const std::pair<const char *, bool> sampling[] = {
-      {"estimator", s.estimator.has_value()}, {"samples", s.samples > 0},
-      {"replicates", s.replicates > 0},       {"tolerance", s.tolerance > 0.0},
-      {"sampling-only", s.samplingOnly},      {"max-samples", s.maxSamples.has_value()},
-      {"seed", s.seed.has_value()}};
+  const std::pair<const char *, bool> sampling[] = {{"estimator", s.estimator.has_value()},
+                                                    {"samples", s.samples > 0},
+                                                    {"replicates", s.replicates > 0},
+                                                    {"tolerance", s.tolerance > 0.0},
+                                                    {"sampling-only", s.samplingOnly},
+                                                    {"max-samples", s.maxSamples.has_value()},
+                                                    {"seed", s.seed.has_value()}};
   for (const auto &[option, given] : sampling)
     if (given) RequireTableUsing(asked, asText, option, "", IsSampled);
 }

@@ -2,7 +2,7 @@
 
 #include <iostream>
 
-#include "lutbake/api/names.h"
+#include "cli_util.h"
 #include "lutbake/tables/bake.h"
 
 namespace lutbake::cli {
@@ -46,6 +46,13 @@ std::unique_ptr<LutbakeApp> MakeLutbakeApp() {
   cli->presets = app.add_subcommand(
       "presets", "The engine presets of bake --preset: each engine's textures, exact");
   SetupPresetsCommand(*cli->presets, cli->presetsJson);
+  cli->help = app.add_subcommand("help", "'lutbake help bake' is 'lutbake bake --help'");
+  std::vector<std::string> commands;
+  for (CLI::App *sub : app.get_subcommands({})) {
+    sub->set_version_flag("--version", app.version());
+    if (sub != cli->help) commands.push_back(sub->get_name());
+  }
+  cli->help->add_option("command", cli->helpCommand)->type_name("COMMAND")->check(OneOf(commands));
   return cli;
 }
 
@@ -87,6 +94,10 @@ int RunParsedCommand(LutbakeApp &cli, const std::string &commandLine) {
     if (cli.report->parsed()) return RunReport(cli.reportOptions);
     if (cli.furnace->parsed()) return RunFurnace(cli.furnaceOptions, *cli.furnace);
     if (cli.presets->parsed()) return RunPresets(cli.presetsJson);
+    if (cli.help->parsed() && !cli.helpCommand.empty())
+      std::cout << cli.app.get_subcommand(cli.helpCommand)->help(cli.app.get_name());
+    else if (cli.help->parsed())
+      std::cout << cli.app.get_formatter()->make_help(&cli.app, cli.app.get_name(), {});
   } catch (const std::exception &e) {
     std::cerr << "lutbake: " << e.what() << "\n";
     return 1;

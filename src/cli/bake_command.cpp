@@ -73,7 +73,7 @@ void AddFileOptions(CLI::App &app, BakeOptions &o) {
 }  // namespace
 
 void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
-  app.add_option("--out", o.outDir, "Output directory (created if missing)")
+  app.add_option("-o,--out", o.outDir, "Output directory (created if missing)")
       ->required()
       ->type_name("DIR");
   app.add_option("--tables", o.tables,
@@ -104,6 +104,7 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
   AddThreadsOption(app, o.threads, "; output does not depend on it");
   AddFileOptions(app, o);
   app.add_flag("--json", o.json, "Print the summary as one JSON object on stdout");
+  app.add_flag("-q,--quiet", o.quiet, "No progress or summary lines (errors are still printed)");
   AddSceneOptions(app, o.scene);
   app.add_flag("--skip-unsupported", o.skipUnsupported,
                "With --scene: bake the plan although some materials use features lutbake does "
@@ -215,13 +216,13 @@ BakeRequest RequestOf(const BakeOptions &o, CLI::App &app) {
   r.skipUnsupported = o.skipUnsupported;
   r.preset = o.preset;
   if (given("--files")) r.presetFiles = SplitList(o.presetFiles);
-  r.progress = TerminalProgress();
+  r.progress = o.quiet ? nullptr : TerminalProgress();
   r.note = [](const std::string &line) { std::cerr << "lutbake bake: " << line << "\n"; };
-  r.tableDone = PrintBakedTable;
+  if (!o.quiet) r.tableDone = PrintBakedTable;
   return r;
 }
 
-void PrintResult(const BakeResult &result, bool json) {
+void PrintResult(const BakeResult &result, bool json, bool quiet) {
   if (result.planNeedsNothing) {
     std::cerr << "lutbake bake: the plan needs no tables; nothing written.\n";
     for (const std::string &line : result.nothingToBake) std::cerr << "  " << line << "\n";
@@ -231,7 +232,7 @@ void PrintResult(const BakeResult &result, bool json) {
     std::cerr << "lutbake bake: " << result.outputDirectory << " also holds "
               << result.foreignFiles.size() << " file(s) lutbake did not write, left as they were: "
               << JoinNames(result.foreignFiles) << "\n";
-  if (result.tolerance > 0.0) {
+  if (result.tolerance > 0.0 && !quiet) {
     double worst = 0.0;
     for (const BakedTable &t : result.tables) worst = std::max(worst, t.integrationErrorMax);
     char line[200];
@@ -251,7 +252,7 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
   request.commandLine = commandLine;
   const InterruptGuard interrupt;
   request.cancellation = &interrupt.token();
-  return RunLibraryCall("bake", o.outDir, [&] { PrintResult(Bake(request), o.json); });
+  return RunLibraryCall("bake", o.outDir, [&] { PrintResult(Bake(request), o.json, o.quiet); });
 }
 
 }  // namespace lutbake::cli

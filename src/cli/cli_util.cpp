@@ -10,9 +10,9 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
-#include <thread>
 
 #include "interrupt.h"
+#include "lutbake/api/bake.h"
 #include "lutbake/core/cancellation.h"
 
 namespace lutbake::cli {
@@ -73,28 +73,8 @@ CLI::Validator RealInRange(double lo, double hi, const std::string &accepted) {
 }
 
 CLI::Validator CppNamespace() {
-  return CLI::Validator(
-      [](std::string &value) -> std::string {
-        // A C++ namespace path: identifiers separated by "::".
-        bool ok = !value.empty();
-        bool start = true;
-        for (size_t i = 0; ok && i < value.size(); ++i) {
-          const char c = value[i];
-          if (c == ':' && i + 1 < value.size() && value[i + 1] == ':' && !start) {
-            ++i;
-            start = true;
-            continue;
-          }
-          const bool alpha = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
-          const bool digit = c >= '0' && c <= '9';
-          ok = alpha || (digit && !start);
-          start = false;
-        }
-        if (!ok || start)
-          return "'" + value + "' is not a C++ namespace name (e.g. my_engine::luts)";
-        return {};
-      },
-      "C++ namespace");
+  return CLI::Validator([](std::string &value) { return NamespaceProblem(value); },
+                        "C++ namespace");
 }
 
 void AddModelOptions(CLI::App &app, std::string &ndf, std::string &smith) {
@@ -149,11 +129,6 @@ int RunLibraryCall(const std::string &command, const std::string &outDir,
     std::cerr << "lutbake " << command << ": out of memory\n";
     return 1;
   }
-}
-
-int ThreadCount(int requested) {
-  return requested > 0 ? requested
-                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
 }  // namespace lutbake::cli

@@ -22,7 +22,7 @@ CLI::Validator OneOf(std::vector<std::string> names);
 CLI::Validator ListOf(std::vector<std::string> names);
 // A real number in [lo, hi], given in decimal or exponent notation.
 CLI::Validator RealInRange(double lo, double hi, const std::string &accepted);
-CLI::Validator CppNamespace();
+CLI::Validator CppNamespace();  // lutbake::NamespaceProblem
 
 template <typename T>
 CLI::Validator InRange(T lo, T hi, const std::string &what) {
@@ -61,8 +61,5 @@ void AddThreadsOption(CLI::App &app, int &threads, const std::string &threadsHel
 // memory" (1). Returns 0 when `call` returns.
 int RunLibraryCall(const std::string &command, const std::string &outDir,
                    const std::function<void()> &call);
-
-// The worker threads to use: `requested`, or all cores when it is 0.
-int ThreadCount(int requested);
 
 }  // namespace lutbake::cli

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "lutbake/api/bake.h"
+
 namespace lutbake {
 namespace {
 
@@ -59,6 +61,15 @@ TEST(Names, DidYouMeanListsTheSuggestions) {
   EXPECT_EQ(DidYouMean("png", FormatNames()), "; did you mean png8 or png16?");
   EXPECT_EQ(DidYouMean("ab", {"abcd", "abxy", "a"}), "; did you mean a, abcd or abxy?");
   EXPECT_EQ(DidYouMean("nope", TableNames()), "");
+}
+
+// The namespace of the generated headers: what --namespace accepts.
+TEST(Names, NamespaceProblemRefusesWhatIsNoCppNamespace) {
+  EXPECT_EQ(NamespaceProblem("lutbake_luts"), "");
+  EXPECT_EQ(NamespaceProblem("my_engine::luts2"), "");
+  for (const char *bad : {"", "9bad", "a:::b", "a::", "::a", "a-b", "a b"})
+    EXPECT_NE(NamespaceProblem(bad).find("is not a C++ namespace name"), std::string::npos) << bad;
+  EXPECT_NE(NamespaceProblem("engine::int").find("int is a C++ keyword"), std::string::npos);
 }
 
 }  // namespace
