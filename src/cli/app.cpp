@@ -3,16 +3,67 @@
 #include <iostream>
 
 #include "cli_util.h"
+#include "lutbake/api/text.h"
 #include "lutbake/tables/bake.h"
 
 namespace lutbake::cli {
 
+namespace {
+
+constexpr size_t kHelpWidth = 80;
+
+// The help at 80 columns, an option as "--ndf NAME  Microfacet distribution
+// [one of: ggx, beckmann] (default ggx)": the type plain, what the
+// validators accept and the default after the description.
+class HelpFormatter : public CLI::Formatter {
+ public:
+  std::string make_option_opts(const CLI::Option *opt) const override {
+    if (opt->get_type_size() == 0) return "";
+    const std::string type = opt->get_type_name();
+    std::string plain = type.substr(0, type.find(':'));
+    if (plain == "TEXT") plain = type.find(":comma-separated") != type.npos ? "LIST" : "NAME";
+    return " " + plain + (opt->get_required() ? " (required)" : "");
+  }
+  std::string make_option_desc(const CLI::Option *opt) const override {
+    const std::string type = opt->get_type_name();
+    std::string text = opt->get_description();
+    const size_t colon = type.find(':');
+    if (colon != type.npos)
+      text += type[colon + 1] == '[' ? " " + type.substr(colon + 1)
+                                     : " [" + type.substr(colon + 1) + "]";
+    if (!opt->get_default_str().empty()) text += " (default " + opt->get_default_str() + ")";
+    return text;
+  }
+  std::string make_option(const CLI::Option *opt, bool positional) const override {
+    return Entry(make_option_name(opt, positional) + make_option_opts(opt), make_option_desc(opt));
+  }
+  std::string make_subcommand(const CLI::App *sub) const override {
+    return Entry(sub->get_name(), sub->get_description());
+  }
+  std::string make_description(const CLI::App *app) const override {
+    return WrapText(app->get_description(), kHelpWidth, 0) + "\n";
+  }
+  std::string make_footer(const CLI::App *app) const override {
+    return app->get_footer().empty() ? "" : WrapText(app->get_footer(), kHelpWidth, 0) + "\n";
+  }
+
+ private:
+  // "  NAME   description", the description wrapped beside the name column.
+  std::string Entry(const std::string &name, const std::string &description) const {
+    std::string line = "  " + name;
+    line += line.size() + 2 > column_width_ ? "\n" + std::string(column_width_, ' ')
+                                            : std::string(column_width_ - line.size(), ' ');
+    return line + WrapText(description, kHelpWidth, column_width_) + "\n";
+  }
+};
+
+}  // namespace
+
 std::unique_ptr<LutbakeApp> MakeLutbakeApp() {
   auto cli = std::make_unique<LutbakeApp>();
   CLI::App &app = cli->app;
-  app.description(
-      "lutbake: bakes microfacet lookup tables (Kulla-Conty E, E_avg, F_avg and the "
-      "split-sum DFG) with a measured error for every texel.");
+  app.formatter(std::make_shared<HelpFormatter>());
+  app.description("lutbake: microfacet lookup tables with a measured error for every texel");
   app.set_version_flag("--version", std::string("lutbake ") + LutbakeVersion());
   app.require_subcommand(1);
   app.footer(
@@ -22,8 +73,7 @@ std::unique_ptr<LutbakeApp> MakeLutbakeApp() {
       "  lutbake eval --table E --mu 0.5 --roughness 0.3\n"
       "  lutbake report --out report    # error against time of every estimator\n"
       "  lutbake bake --preset filament --out dfg   # an engine's own table, exact\n"
-      "Run 'lutbake COMMAND --help' (bake, plan, check, eval, report, furnace, presets) for "
-      "their options.");
+      "Run 'lutbake help COMMAND' for a command's options.");
   cli->bake = app.add_subcommand("bake", "Bake tables into a directory (EXR, .bin, C++ header)");
   SetupBakeCommand(*cli->bake, cli->bakeOptions);
   cli->plan = app.add_subcommand(

@@ -19,7 +19,7 @@
 namespace lutbake::cli {
 
 struct LutbakeApp {
-  CLI::App app;
+  CLI::App app{"", "lutbake"};
   BakeOptions bakeOptions;
   PlanCommandOptions planOptions;
   EvalOptions evalOptions;

@@ -35,15 +35,10 @@ constexpr int kMaxSize = 4096;  // texels per axis (the library refuses larger 3
 // written per table, and how.
 void AddFileOptions(CLI::App &app, BakeOptions &o) {
   app.add_option("--format", o.formats,
-                 "Files to write per table: exr (T.exr), bin (T.bin), header (T.h), png8 / png16 "
-                 "(T.png, 8 or 16 bits rounded to nearest: adds at most half a step, 1/510 or "
-                 "1/131070; values must lie in [0, 1]), ktx2 / ktx2-half (T.ktx2, float32 or "
-                 "binary16), dds / dds-half (T.dds with the DX10 header, float32 or binary16); "
-                 "source embeddings: inc / inc-half (T.inc, Filament-style literals for an array "
-                 "initialiser), js / js-half and ts / ts-half (T.js, T.ts: ES or TypeScript "
-                 "module, Float32Array or binary16 Uint16Array), glsl-array, hlsl-array, "
-                 "wgsl-array, msl-array (T.glsl, T.hlsl, T.wgsl, T.metal: a constant float32 "
-                 "array and its bilinear lookup); every file's errorMax covers its own storage")
+                 "Files to write per table T (docs/formats.md): exr, bin, header (T.h), png8 / "
+                 "png16 (values in [0, 1], rounded to 8 or 16 bits), ktx2, dds, and the source "
+                 "embeddings inc, js, ts, glsl-array, hlsl-array, wgsl-array, msl-array; the -half "
+                 "forms store binary16. Every file's errorMax covers its own storage")
       ->capture_default_str()
       ->check(ListOf(FormatNames()));
   app.add_option("--shader", o.shaders,
@@ -119,11 +114,9 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
                  "presets --json lists each preset's files)")
       ->type_name("FILE,...");
   app.footer(
-      "With no option beyond --out, every texel of E, Eavg and dfg is integrated by the "
-      "quadrature until its bound is below 1e-8; with the float32 rounding of the stored "
-      "value, every stated bound is below 4e-8 (float32-exact), in a fraction of a second. "
-      "--samples N samples instead (visible normals, scrambled Sobol points), --tolerance EPS "
-      "asks for another bound.\n\n"
+      "By default every texel of E, Eavg and dfg is integrated by the quadrature to a bound "
+      "below 1e-8 (4e-8 with the float32 rounding as stored), in a fraction of a second; "
+      "--samples N samples instead, --tolerance EPS asks for another bound.\n\n"
       "Example:\n  lutbake bake --out out\n"
       "  lutbake bake --out luts --tables E,Eavg --ndf beckmann --size 64 --format exr,header\n"
       "  lutbake bake --out luts --scene car.gltf   # only what the scene needs (lutbake plan)\n"

@@ -1,13 +1,5 @@
 #include "cli_util.h"
 
-#include <fcntl.h>
-#include <signal.h>
-#include <unistd.h>
-
-#include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -59,16 +51,7 @@ CLI::Validator ListOf(std::vector<std::string> names) {
 
 CLI::Validator RealInRange(double lo, double hi, const std::string &accepted) {
   return CLI::Validator(
-      [lo, hi, accepted](std::string &value) -> std::string {
-        char *end = nullptr;
-        errno = 0;
-        const double v = std::strtod(value.c_str(), &end);
-        if (value.empty() || end != value.c_str() + value.size() || errno == ERANGE ||
-            !std::isfinite(v))
-          return "'" + value + "' is not a number; accepted: " + accepted;
-        if (!(v >= lo && v <= hi)) return "'" + value + "' is out of range; accepted: " + accepted;
-        return {};
-      },
+      [lo, hi, accepted](std::string &value) { return RealNumberProblem(value, lo, hi, accepted); },
       accepted);
 }
 

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "lutbake/formats/output_transaction.h"
 #include "lutbake/formats/atomic_output.h"
@@ -87,6 +88,11 @@ TEST(Cli, EveryCommandTakesVersionAndHelp) {
     const CommandResult help = Lutbake(std::string("help ") + command);
     EXPECT_EQ(help.status, 0) << command;
     EXPECT_EQ(help.output, Lutbake(std::string(command) + " --help").output) << command;
+    // At 80 columns, the types plain ("--ndf NAME", not "TEXT:one of: ...").
+    std::stringstream lines(help.output);
+    for (std::string line; std::getline(lines, line);) EXPECT_LE(line.size(), 80u) << line;
+    for (const char *raw : {"TEXT", ":one of", ":comma-separated", "float64 keeps"})
+      EXPECT_EQ(help.output.find(raw), std::string::npos) << command << ": " << raw;
   }
   EXPECT_EQ(Lutbake("help").output, Lutbake("--help").output);
   const CommandResult unknown = Lutbake("help bak");
