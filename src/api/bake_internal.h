@@ -16,8 +16,6 @@ void ValidateTableNames(const BakeRequest &request);
 // Throws UsageError for an option the request sets that applies to none of
 // its tables or files (bake_validation.cpp).
 void ValidateApplicability(const BakeRequest &request);
-// "" for a usable C++ namespace path, else why not (a keyword).
-std::string NamespaceProblem(const std::string &name);
 
 std::vector<std::string> DefaultFormats();  // exr, bin, header
 // "a,b,c", as a list option spells it.

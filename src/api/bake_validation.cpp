@@ -98,16 +98,30 @@ bool IsCppKeyword(const std::string &word) {
 }  // namespace
 
 std::string NamespaceProblem(const std::string &name) {
-  size_t start = 0;
+  // Identifiers separated by "::", none of them a keyword.
+  bool ok = !name.empty(), start = true;
+  for (size_t i = 0; ok && i < name.size(); ++i) {
+    const char c = name[i];
+    if (c == ':' && i + 1 < name.size() && name[i + 1] == ':' && !start) {
+      ++i;
+      start = true;
+      continue;
+    }
+    const bool alpha = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+    ok = alpha || (c >= '0' && c <= '9' && !start);
+    start = false;
+  }
+  if (!ok || start) return "'" + name + "' is not a C++ namespace name (e.g. my_engine::luts)";
+  size_t begin = 0;
   while (true) {
-    const size_t end = name.find("::", start);
-    const std::string part = name.substr(start, end == std::string::npos ? end : end - start);
+    const size_t end = name.find("::", begin);
+    const std::string part = name.substr(begin, end == std::string::npos ? end : end - begin);
     if (IsCppKeyword(part))
       return "'" + name + "': " + part +
              " is a C++ keyword; accepted: a C++ namespace name (e.g. "
              "my_engine::luts)";
     if (end == std::string::npos) return "";
-    start = end + 2;
+    begin = end + 2;
   }
 }
 

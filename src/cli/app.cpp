@@ -2,16 +2,68 @@
 
 #include <iostream>
 
+#include "cli_util.h"
+#include "lutbake/api/text.h"
 #include "lutbake/tables/bake.h"
 
 namespace lutbake::cli {
 
+namespace {
+
+constexpr size_t kHelpWidth = 80;
+
+// The help at 80 columns, an option as "--ndf NAME  Microfacet distribution
+// [one of: ggx, beckmann] (default ggx)": the type plain, what the
+// validators accept and the default after the description.
+class HelpFormatter : public CLI::Formatter {
+ public:
+  std::string make_option_opts(const CLI::Option *opt) const override {
+    if (opt->get_type_size() == 0) return "";
+    const std::string type = opt->get_type_name();
+    std::string plain = type.substr(0, type.find(':'));
+    if (plain == "TEXT") plain = type.find(":comma-separated") != type.npos ? "LIST" : "NAME";
+    return " " + plain + (opt->get_required() ? " (required)" : "");
+  }
+  std::string make_option_desc(const CLI::Option *opt) const override {
+    const std::string type = opt->get_type_name();
+    std::string text = opt->get_description();
+    const size_t colon = type.find(':');
+    if (colon != type.npos)
+      text += type[colon + 1] == '[' ? " " + type.substr(colon + 1)
+                                     : " [" + type.substr(colon + 1) + "]";
+    if (!opt->get_default_str().empty()) text += " (default " + opt->get_default_str() + ")";
+    return text;
+  }
+  std::string make_option(const CLI::Option *opt, bool positional) const override {
+    return Entry(make_option_name(opt, positional) + make_option_opts(opt), make_option_desc(opt));
+  }
+  std::string make_subcommand(const CLI::App *sub) const override {
+    return Entry(sub->get_name(), sub->get_description());
+  }
+  std::string make_description(const CLI::App *app) const override {
+    return WrapText(app->get_description(), kHelpWidth, 0) + "\n";
+  }
+  std::string make_footer(const CLI::App *app) const override {
+    return app->get_footer().empty() ? "" : WrapText(app->get_footer(), kHelpWidth, 0) + "\n";
+  }
+
+ private:
+  // "  NAME   description", the description wrapped beside the name column.
+  std::string Entry(const std::string &name, const std::string &description) const {
+    std::string line = "  " + name;
+    line += line.size() + 2 > column_width_ ? "\n" + std::string(column_width_, ' ')
+                                            : std::string(column_width_ - line.size(), ' ');
+    return line + WrapText(description, kHelpWidth, column_width_) + "\n";
+  }
+};
+
+}  // namespace
+
 std::unique_ptr<LutbakeApp> MakeLutbakeApp() {
   auto cli = std::make_unique<LutbakeApp>();
   CLI::App &app = cli->app;
-  app.description(
-      "lutbake: bakes microfacet lookup tables (Kulla-Conty E, E_avg, F_avg and the "
-      "split-sum DFG) with a measured error for every texel.");
+  app.formatter(std::make_shared<HelpFormatter>());
+  app.description("lutbake: microfacet lookup tables with a measured error for every texel");
   app.set_version_flag("--version", std::string("lutbake ") + LutbakeVersion());
   app.require_subcommand(1);
   app.footer(
@@ -21,8 +73,7 @@ std::unique_ptr<LutbakeApp> MakeLutbakeApp() {
       "  lutbake eval --table E --mu 0.5 --roughness 0.3\n"
       "  lutbake report --out report    # error against time of every estimator\n"
       "  lutbake bake --preset filament --out dfg   # an engine's own table, exact\n"
-      "Run 'lutbake COMMAND --help' (bake, plan, check, eval, report, furnace, presets) for "
-      "their options.");
+      "Run 'lutbake help COMMAND' for a command's options.");
   cli->bake = app.add_subcommand("bake", "Bake tables into a directory (EXR, .bin, C++ header)");
   SetupBakeCommand(*cli->bake, cli->bakeOptions);
   cli->plan = app.add_subcommand(
@@ -45,6 +96,13 @@ std::unique_ptr<LutbakeApp> MakeLutbakeApp() {
   cli->presets = app.add_subcommand(
       "presets", "The engine presets of bake --preset: each engine's textures, exact");
   SetupPresetsCommand(*cli->presets, cli->presetsJson);
+  cli->help = app.add_subcommand("help", "'lutbake help bake' is 'lutbake bake --help'");
+  std::vector<std::string> commands;
+  for (CLI::App *sub : app.get_subcommands({})) {
+    sub->set_version_flag("--version", app.version());
+    if (sub != cli->help) commands.push_back(sub->get_name());
+  }
+  cli->help->add_option("command", cli->helpCommand)->type_name("COMMAND")->check(OneOf(commands));
   return cli;
 }
 
@@ -56,13 +114,14 @@ int ReportParseError(LutbakeApp &cli, const CLI::ParseError &e, int argc, const 
   // No command recognised: CLI11 says only that one is required; name
   // what was given instead and the commands there are.
   if (app.get_subcommands().empty()) {
-    std::string commands;
-    for (const CLI::App *sub : app.get_subcommands({}))
-      commands += (commands.empty() ? "" : ", ") + sub->get_name();
+    std::vector<std::string> commands;
+    for (const CLI::App *sub : app.get_subcommands({})) commands.push_back(sub->get_name());
     if (argc > 1)
-      std::cerr << "lutbake: '" << argv[1] << "' is not a command; accepted: " << commands << "\n";
+      std::cerr << "lutbake: '" << argv[1]
+                << "' is not a command; accepted: " << JoinNames(commands)
+                << DidYouMean(argv[1], commands) << "\n";
     else
-      std::cerr << "lutbake: a command is required; accepted: " << commands << "\n";
+      std::cerr << "lutbake: a command is required; accepted: " << JoinNames(commands) << "\n";
     std::cerr << "Run 'lutbake COMMAND --help' for the accepted options.\n";
     return 2;
   }
@@ -85,6 +144,10 @@ int RunParsedCommand(LutbakeApp &cli, const std::string &commandLine) {
     if (cli.report->parsed()) return RunReport(cli.reportOptions);
     if (cli.furnace->parsed()) return RunFurnace(cli.furnaceOptions, *cli.furnace);
     if (cli.presets->parsed()) return RunPresets(cli.presetsJson);
+    if (cli.help->parsed() && !cli.helpCommand.empty())
+      std::cout << cli.app.get_subcommand(cli.helpCommand)->help(cli.app.get_name());
+    else if (cli.help->parsed())
+      std::cout << cli.app.get_formatter()->make_help(&cli.app, cli.app.get_name(), {});
   } catch (const std::exception &e) {
     std::cerr << "lutbake: " << e.what() << "\n";
     return 1;

@@ -19,7 +19,7 @@
 namespace lutbake::cli {
 
 struct LutbakeApp {
-  CLI::App app;
+  CLI::App app{"", "lutbake"};
   BakeOptions bakeOptions;
   PlanCommandOptions planOptions;
   EvalOptions evalOptions;
@@ -27,8 +27,9 @@ struct LutbakeApp {
   ReportOptions reportOptions;
   FurnaceOptions furnaceOptions;
   bool presetsJson = false;
+  std::string helpCommand;  // lutbake help COMMAND
   CLI::App *bake = nullptr, *plan = nullptr, *eval = nullptr, *check = nullptr, *report = nullptr,
-           *furnace = nullptr, *presets = nullptr;
+           *furnace = nullptr, *presets = nullptr, *help = nullptr;
 };
 
 // The app with every subcommand set up; parsing it (app.parse) validates the

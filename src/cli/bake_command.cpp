@@ -35,15 +35,10 @@ constexpr int kMaxSize = 4096;  // texels per axis (the library refuses larger 3
 // written per table, and how.
 void AddFileOptions(CLI::App &app, BakeOptions &o) {
   app.add_option("--format", o.formats,
-                 "Files to write per table: exr (T.exr), bin (T.bin), header (T.h), png8 / png16 "
-                 "(T.png, 8 or 16 bits rounded to nearest: adds at most half a step, 1/510 or "
-                 "1/131070; values must lie in [0, 1]), ktx2 / ktx2-half (T.ktx2, float32 or "
-                 "binary16), dds / dds-half (T.dds with the DX10 header, float32 or binary16); "
-                 "source embeddings: inc / inc-half (T.inc, Filament-style literals for an array "
-                 "initialiser), js / js-half and ts / ts-half (T.js, T.ts: ES or TypeScript "
-                 "module, Float32Array or binary16 Uint16Array), glsl-array, hlsl-array, "
-                 "wgsl-array, msl-array (T.glsl, T.hlsl, T.wgsl, T.metal: a constant float32 "
-                 "array and its bilinear lookup); every file's errorMax covers its own storage")
+                 "Files to write per table T (docs/formats.md): exr, bin, header (T.h), png8 / "
+                 "png16 (values in [0, 1], rounded to 8 or 16 bits), ktx2, dds, and the source "
+                 "embeddings inc, js, ts, glsl-array, hlsl-array, wgsl-array, msl-array; the -half "
+                 "forms store binary16. Every file's errorMax covers its own storage")
       ->capture_default_str()
       ->check(ListOf(FormatNames()));
   app.add_option("--shader", o.shaders,
@@ -73,7 +68,7 @@ void AddFileOptions(CLI::App &app, BakeOptions &o) {
 }  // namespace
 
 void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
-  app.add_option("--out", o.outDir, "Output directory (created if missing)")
+  app.add_option("-o,--out", o.outDir, "Output directory (created if missing)")
       ->required()
       ->type_name("DIR");
   app.add_option("--tables", o.tables,
@@ -104,6 +99,7 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
   AddThreadsOption(app, o.threads, "; output does not depend on it");
   AddFileOptions(app, o);
   app.add_flag("--json", o.json, "Print the summary as one JSON object on stdout");
+  app.add_flag("-q,--quiet", o.quiet, "No progress or summary lines (errors are still printed)");
   AddSceneOptions(app, o.scene);
   app.add_flag("--skip-unsupported", o.skipUnsupported,
                "With --scene: bake the plan although some materials use features lutbake does "
@@ -118,11 +114,9 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
                  "presets --json lists each preset's files)")
       ->type_name("FILE,...");
   app.footer(
-      "With no option beyond --out, every texel of E, Eavg and dfg is integrated by the "
-      "quadrature until its bound is below 1e-8; with the float32 rounding of the stored "
-      "value, every stated bound is below 4e-8 (float32-exact), in a fraction of a second. "
-      "--samples N samples instead (visible normals, scrambled Sobol points), --tolerance EPS "
-      "asks for another bound.\n\n"
+      "By default every texel of E, Eavg and dfg is integrated by the quadrature to a bound "
+      "below 1e-8 (4e-8 with the float32 rounding as stored), in a fraction of a second; "
+      "--samples N samples instead, --tolerance EPS asks for another bound.\n\n"
       "Example:\n  lutbake bake --out out\n"
       "  lutbake bake --out luts --tables E,Eavg --ndf beckmann --size 64 --format exr,header\n"
       "  lutbake bake --out luts --scene car.gltf   # only what the scene needs (lutbake plan)\n"
@@ -215,13 +209,13 @@ BakeRequest RequestOf(const BakeOptions &o, CLI::App &app) {
   r.skipUnsupported = o.skipUnsupported;
   r.preset = o.preset;
   if (given("--files")) r.presetFiles = SplitList(o.presetFiles);
-  r.progress = TerminalProgress();
+  r.progress = o.quiet ? nullptr : TerminalProgress();
   r.note = [](const std::string &line) { std::cerr << "lutbake bake: " << line << "\n"; };
-  r.tableDone = PrintBakedTable;
+  if (!o.quiet) r.tableDone = PrintBakedTable;
   return r;
 }
 
-void PrintResult(const BakeResult &result, bool json) {
+void PrintResult(const BakeResult &result, bool json, bool quiet) {
   if (result.planNeedsNothing) {
     std::cerr << "lutbake bake: the plan needs no tables; nothing written.\n";
     for (const std::string &line : result.nothingToBake) std::cerr << "  " << line << "\n";
@@ -231,7 +225,7 @@ void PrintResult(const BakeResult &result, bool json) {
     std::cerr << "lutbake bake: " << result.outputDirectory << " also holds "
               << result.foreignFiles.size() << " file(s) lutbake did not write, left as they were: "
               << JoinNames(result.foreignFiles) << "\n";
-  if (result.tolerance > 0.0) {
+  if (result.tolerance > 0.0 && !quiet) {
     double worst = 0.0;
     for (const BakedTable &t : result.tables) worst = std::max(worst, t.integrationErrorMax);
     char line[200];
@@ -251,7 +245,7 @@ int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app)
   request.commandLine = commandLine;
   const InterruptGuard interrupt;
   request.cancellation = &interrupt.token();
-  return RunLibraryCall("bake", o.outDir, [&] { PrintResult(Bake(request), o.json); });
+  return RunLibraryCall("bake", o.outDir, [&] { PrintResult(Bake(request), o.json, o.quiet); });
 }
 
 }  // namespace lutbake::cli

@@ -27,6 +27,7 @@ void SetupCheckCommand(CLI::App &app, CheckCommandOptions &o) {
   AddSeedOption(app, o.request.seed, "Seed of the random points");
   AddThreadsOption(app, o.request.threads);
   app.add_flag("--json", o.json, "Print the results as one JSON object on stdout");
+  app.add_flag("-q,--quiet", o.quiet, "No progress line (errors are still printed)");
   app.footer(
       "Checks metadata, formats, NaN/Inf, ranges, every texel against the quadrature, random\n"
       "points through the bilinear lookup, A + B = E, E_avg against E, monotonicity, Schlick's\n"
@@ -36,7 +37,7 @@ void SetupCheckCommand(CLI::App &app, CheckCommandOptions &o) {
 
 int RunCheck(const CheckCommandOptions &o) {
   CheckRequest request = o.request;
-  const bool tty = ::isatty(STDERR_FILENO) != 0;
+  const bool tty = !o.quiet && ::isatty(STDERR_FILENO) != 0;
   if (tty)
     request.progress = [](double fraction) {
       std::fprintf(stderr, "\rlutbake check: quadrature reference %3.0f%%", 100.0 * fraction);

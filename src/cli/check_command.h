@@ -11,7 +11,7 @@ namespace lutbake::cli {
 
 struct CheckCommandOptions {
   CheckRequest request;  // the options bind to its fields
-  bool json = false;
+  bool json = false, quiet = false;
 };
 
 void SetupCheckCommand(CLI::App &app, CheckCommandOptions &options);

@@ -1,18 +1,10 @@
 #include "cli_util.h"
 
-#include <fcntl.h>
-#include <signal.h>
-#include <unistd.h>
-
-#include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
 #include <iostream>
 #include <sstream>
-#include <thread>
 
 #include "interrupt.h"
+#include "lutbake/api/bake.h"
 #include "lutbake/core/cancellation.h"
 
 namespace lutbake::cli {
@@ -31,7 +23,7 @@ CLI::Validator OneOf(std::vector<std::string> names) {
       [names, accepted](std::string &value) -> std::string {
         for (const std::string &n : names)
           if (value == n) return {};
-        return "'" + value + "' is not accepted; accepted: " + accepted;
+        return "'" + value + "' is not accepted; accepted: " + accepted + DidYouMean(value, names);
       },
       "one of: " + accepted);
 }
@@ -47,7 +39,8 @@ CLI::Validator ListOf(std::vector<std::string> names) {
           for (const std::string &n : names) known = known || items[i] == n;
           if (!known)
             return "'" + value + "' names '" + items[i] +
-                   "', which is not accepted; accepted: a comma-separated subset of " + accepted;
+                   "', which is not accepted; accepted: a comma-separated subset of " + accepted +
+                   DidYouMean(items[i], names);
           for (size_t j = 0; j < i; ++j)
             if (items[j] == items[i]) return "'" + value + "' names '" + items[i] + "' twice";
         }
@@ -58,42 +51,13 @@ CLI::Validator ListOf(std::vector<std::string> names) {
 
 CLI::Validator RealInRange(double lo, double hi, const std::string &accepted) {
   return CLI::Validator(
-      [lo, hi, accepted](std::string &value) -> std::string {
-        char *end = nullptr;
-        errno = 0;
-        const double v = std::strtod(value.c_str(), &end);
-        if (value.empty() || end != value.c_str() + value.size() || errno == ERANGE ||
-            !std::isfinite(v))
-          return "'" + value + "' is not a number; accepted: " + accepted;
-        if (!(v >= lo && v <= hi)) return "'" + value + "' is out of range; accepted: " + accepted;
-        return {};
-      },
+      [lo, hi, accepted](std::string &value) { return RealNumberProblem(value, lo, hi, accepted); },
       accepted);
 }
 
 CLI::Validator CppNamespace() {
-  return CLI::Validator(
-      [](std::string &value) -> std::string {
-        // A C++ namespace path: identifiers separated by "::".
-        bool ok = !value.empty();
-        bool start = true;
-        for (size_t i = 0; ok && i < value.size(); ++i) {
-          const char c = value[i];
-          if (c == ':' && i + 1 < value.size() && value[i + 1] == ':' && !start) {
-            ++i;
-            start = true;
-            continue;
-          }
-          const bool alpha = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
-          const bool digit = c >= '0' && c <= '9';
-          ok = alpha || (digit && !start);
-          start = false;
-        }
-        if (!ok || start)
-          return "'" + value + "' is not a C++ namespace name (e.g. my_engine::luts)";
-        return {};
-      },
-      "C++ namespace");
+  return CLI::Validator([](std::string &value) { return NamespaceProblem(value); },
+                        "C++ namespace");
 }
 
 void AddModelOptions(CLI::App &app, std::string &ndf, std::string &smith) {
@@ -148,11 +112,6 @@ int RunLibraryCall(const std::string &command, const std::string &outDir,
     std::cerr << "lutbake " << command << ": out of memory\n";
     return 1;
   }
-}
-
-int ThreadCount(int requested) {
-  return requested > 0 ? requested
-                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
 }  // namespace lutbake::cli

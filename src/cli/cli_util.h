@@ -4,13 +4,12 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <cerrno>
-#include <cstdlib>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "lutbake/api/names.h"
+#include "lutbake/api/numbers.h"
 
 namespace lutbake::cli {
 
@@ -22,22 +21,16 @@ CLI::Validator OneOf(std::vector<std::string> names);
 CLI::Validator ListOf(std::vector<std::string> names);
 // A real number in [lo, hi], given in decimal or exponent notation.
 CLI::Validator RealInRange(double lo, double hi, const std::string &accepted);
-CLI::Validator CppNamespace();
+CLI::Validator CppNamespace();  // lutbake::NamespaceProblem
 
+// A whole number in [lo, hi] (lutbake::WholeNumberProblem).
 template <typename T>
 CLI::Validator InRange(T lo, T hi, const std::string &what) {
   const std::string accepted = std::to_string(lo) + " to " + std::to_string(hi) + " " + what;
   return CLI::Validator(
-      [lo, hi, accepted](std::string &value) -> std::string {
-        // Reject signs, spaces and trailing text before converting.
-        if (value.empty() || value.find_first_not_of("0123456789") != std::string::npos)
-          return "'" + value + "' is not a whole number; accepted: " + accepted;
-        errno = 0;
-        const unsigned long long v = std::strtoull(value.c_str(), nullptr, 10);
-        if (errno == ERANGE || v < static_cast<unsigned long long>(lo) ||
-            v > static_cast<unsigned long long>(hi))
-          return "'" + value + "' is out of range; accepted: " + accepted;
-        return {};
+      [lo, hi, accepted](std::string &value) {
+        return WholeNumberProblem(value, static_cast<uint64_t>(lo), static_cast<uint64_t>(hi),
+                                  accepted);
       },
       "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
 }
@@ -61,8 +54,5 @@ void AddThreadsOption(CLI::App &app, int &threads, const std::string &threadsHel
 // memory" (1). Returns 0 when `call` returns.
 int RunLibraryCall(const std::string &command, const std::string &outDir,
                    const std::function<void()> &call);
-
-// The worker threads to use: `requested`, or all cores when it is 0.
-int ThreadCount(int requested);
 
 }  // namespace lutbake::cli

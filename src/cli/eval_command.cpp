@@ -1,7 +1,7 @@
 #include "eval_command.h"
 
-#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 
 #include "bake_command.h"
@@ -27,17 +27,10 @@ CLI::Validator RealList(const RealRange &range) {
         if (items.size() > kMaxEvalPoints)
           return std::to_string(items.size()) + " values; accepted: at most " +
                  std::to_string(kMaxEvalPoints);
-        for (const std::string &item : items) {
-          char *end = nullptr;
-          errno = 0;
-          const double v = std::strtod(item.c_str(), &end);
-          if (item.empty() || end != item.c_str() + item.size() || std::isnan(v))
-            return "'" + item + "' is not a number; accepted: " + range.accepted;
-          // ERANGE: beyond the doubles (1e400) or below them (1e-400, which
-          // strtod rounds to 0 but is not the 0 the user could have typed).
-          if (errno == ERANGE || !(v >= range.lo && v <= range.hi))
-            return "'" + item + "' is out of range; accepted: " + range.accepted;
-        }
+        for (const std::string &item : items)
+          if (std::string problem = RealNumberProblem(item, range.lo, range.hi, range.accepted);
+              !problem.empty())
+            return problem;
         return {};
       },
       range.accepted);

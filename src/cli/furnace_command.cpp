@@ -42,7 +42,7 @@ void SetupFurnaceCommand(CLI::App &app, FurnaceOptions &o) {
       ->type_name("LIST");
   app.add_option("--mu", o.mu, "View cosines in [0, 1], comma-separated (default 0, 1/16, ..., 1)")
       ->type_name("LIST");
-  app.add_option("--out", o.out,
+  app.add_option("-o,--out", o.out,
                  "Write furnace.csv, furnace.json, furnace_plot.svg/.png and "
                  "furnace_spheres.exr/.png into DIR")
       ->type_name("DIR");

@@ -12,7 +12,7 @@
 namespace lutbake::cli {
 
 void SetupReportCommand(CLI::App &app, ReportOptions &o) {
-  app.add_option("--out", o.outDir, "Output directory for report.csv, report.md, report.svg")
+  app.add_option("-o,--out", o.outDir, "Output directory for report.csv, report.md, report.svg")
       ->required()
       ->type_name("DIR");
   app.add_option("--tables", o.tables,
@@ -35,6 +35,7 @@ void SetupReportCommand(CLI::App &app, ReportOptions &o) {
   AddModelOptions(app, o.ndf, o.smith);
   AddSeedOption(app, o.seed, "Seed of the point sets");
   AddThreadsOption(app, o.threads);
+  app.add_flag("-q,--quiet", o.quiet, "No progress or summary lines (errors are still printed)");
   app.footer("Example:\n  lutbake report --out report --budget 60");
 }
 
@@ -55,7 +56,7 @@ int RunReport(const ReportOptions &o) {
   r.cancellation = &interrupt.token();
   // A progress line, rewritten in place, only when stderr is a terminal;
   // cleared when the measuring ends, however it ends.
-  const bool tty = ::isatty(STDERR_FILENO) != 0;
+  const bool tty = !o.quiet && ::isatty(STDERR_FILENO) != 0;
   if (tty)
     r.progress = [](const std::string &line) { std::cerr << "\r\033[K" << line << std::flush; };
   return RunLibraryCall("report", o.outDir, [&] {
@@ -67,8 +68,9 @@ int RunReport(const ReportOptions &o) {
       throw;
     }
     if (tty) std::cerr << "\r\033[K";
-    std::cerr << "lutbake report: " << runs << " runs; wrote report.csv, report.md, "
-              << "report.svg in " << o.outDir << "\n";
+    if (!o.quiet)
+      std::cerr << "lutbake report: " << runs << " runs; wrote report.csv, report.md, "
+                << "report.svg in " << o.outDir << "\n";
   });
 }
 

@@ -16,6 +16,7 @@ struct ReportOptions {
   double budget = 60;
   uint64_t seed = 0;
   int threads = 0;
+  bool quiet = false;
 };
 
 void SetupReportCommand(CLI::App &app, ReportOptions &options);

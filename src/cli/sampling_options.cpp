@@ -10,12 +10,10 @@ constexpr uint64_t kMaxSamples = uint64_t{1} << 30;
 
 void AddSamplingOptions(CLI::App &app, SamplingOptions &o, const std::string &unit) {
   app.add_option("--estimator", o.estimator,
-                 "quadrature (the default): panel Gauss-Legendre at two orders, deterministic, "
-                 "bound below 1e-8 (or --tolerance); vndf: visible-normal sampling, scrambled "
-                 "Sobol points (the default once --samples is given); vndf-random: the same with "
-                 "independent random points; ndf: NDF sampling; cosine, uniform: light "
-                 "directions cosine-weighted or uniform (baselines); adaptive: nested adaptive "
-                 "Gauss-Kronrod (the reference of lutbake check)")
+                 "quadrature (the default): panel Gauss-Legendre, deterministic, bound below 1e-8 "
+                 "(or --tolerance); vndf (the default once --samples is given), vndf-random: "
+                 "visible normals, Sobol or random points; ndf, cosine, uniform: baselines; "
+                 "adaptive: Gauss-Kronrod (the reference of lutbake check)")
       ->type_name("NAME")
       ->check(OneOf(EstimatorNames()));
   app.add_option("--samples", o.samples,
@@ -33,11 +31,10 @@ void AddSamplingOptions(CLI::App &app, SamplingOptions &o, const std::string &un
       ->check(InRange(2, 64, "replicates"));
   app.add_option("--tolerance", o.tolerance,
                  "Refine every " + unit +
-                     " of E, Eavg and dfg until its integration bound is at most EPS: by the "
-                     "quadrature (adding orders), or with a sampled --estimator in rounds that "
-                     "double the samples, switching to the quadrature where that is cheaper. "
-                     "Files add the rounding of the stored values (float32: up to 3e-8; "
-                     "--bin-type float64 keeps it out)")
+                     " of E, Eavg and dfg until its integration bound is at most EPS: quadrature "
+                     "orders, or sampled rounds that double the samples, switching to the "
+                     "quadrature where cheaper. Files add their storage's rounding (float32: up to "
+                     "3e-8; --bin-type double keeps it out)")
       ->type_name("EPS")
       ->check(RealInRange(1e-9, 0.1, "a number from 1e-9 to 0.1"));
   app.add_flag("--sampling-only", o.samplingOnly,

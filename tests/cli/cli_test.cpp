@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "lutbake/formats/output_transaction.h"
 #include "lutbake/formats/atomic_output.h"
@@ -74,6 +75,48 @@ TEST(Cli, HelpListsEveryOption) {
                            "--samples", "--seed", "--threads", "--format", "--json", "Example"})
     EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
   EXPECT_EQ(Lutbake("--help").status, 0);
+}
+
+// docs/cli.md: --version and help on every command, -o for --out, -q.
+TEST(Cli, EveryCommandTakesVersionAndHelp) {
+  const std::string version = Lutbake("--version").output;
+  ASSERT_NE(version.find("lutbake "), std::string::npos) << version;
+  for (const char *command : {"bake", "plan", "eval", "check", "report", "furnace", "presets"}) {
+    const CommandResult r = Lutbake(std::string(command) + " --version");
+    EXPECT_EQ(r.status, 0) << command << ": " << r.output;
+    EXPECT_EQ(r.output, version) << command;
+    const CommandResult help = Lutbake(std::string("help ") + command);
+    EXPECT_EQ(help.status, 0) << command;
+    EXPECT_EQ(help.output, Lutbake(std::string(command) + " --help").output) << command;
+    // At 80 columns, the types plain ("--ndf NAME", not "TEXT:one of: ...").
+    std::stringstream lines(help.output);
+    for (std::string line; std::getline(lines, line);) EXPECT_LE(line.size(), 80u) << line;
+    for (const char *raw : {"TEXT", ":one of", ":comma-separated", "float64 keeps"})
+      EXPECT_EQ(help.output.find(raw), std::string::npos) << command << ": " << raw;
+  }
+  EXPECT_EQ(Lutbake("help").output, Lutbake("--help").output);
+  const CommandResult unknown = Lutbake("help bak");
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.output.find("did you mean bake?"), std::string::npos) << unknown.output;
+}
+
+TEST(Cli, ShortOutAndQuiet) {
+  const fs::path out = Scratch("short_out"), quiet = Scratch("quiet");
+  const CommandResult r = Lutbake("bake -o " + out.string() + " --tables E --size 2 --samples 64");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::exists(out / "E.exr"));
+  EXPECT_NE(r.output.find("error max"), std::string::npos) << r.output;
+  const CommandResult q =
+      Lutbake("bake -q -o " + quiet.string() + " --tables E --size 2 --samples 64");
+  EXPECT_EQ(q.status, 0) << q.output;
+  EXPECT_TRUE(fs::exists(quiet / "E.exr"));
+  EXPECT_EQ(q.output, "");
+  // Errors are still printed.
+  const CommandResult bad = Lutbake("bake -q -o " + quiet.string() + " --tables nope");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.output.find("'nope'"), std::string::npos);
+  fs::remove_all(out);
+  fs::remove_all(quiet);
 }
 
 std::string ReadFile(const fs::path &p) {

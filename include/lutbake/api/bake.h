@@ -150,4 +150,8 @@ BakeResult Bake(const BakeRequest &request);
 // in the order of `lutbake bake --help`, only those set.
 std::string EquivalentCommandLine(const BakeRequest &request);
 
+// "" when `name` can name the generated headers' namespace (identifiers
+// separated by "::", none a C++ keyword), else why not, quoting it.
+std::string NamespaceProblem(const std::string &name);
+
 }  // namespace lutbake
