@@ -47,8 +47,10 @@ done
 # and the sampled estimator; Favg with each Fresnel model.
 # The lists `bake --tables` and `report --tables` (the sampled tables) accept.
 accepted() {
-  "${tree[g++]}/lutbake" "$1" --help | sed -n 's/.*comma-separated subset of: //p' | head -1 |
-    cut -d= -f1 | tr -d ' '
+  # --help wraps at 80 columns: join the lines, squeeze the spaces, then take
+  # the list in --tables' brackets.
+  "${tree[g++]}/lutbake" "$1" --help | tr '\n' ' ' | tr -s ' ' |
+    sed -n 's/.*--tables LIST[^[]*\[comma-separated subset of: \([^]]*\)\].*/\1/p' | tr -d ' '
 }
 tables=$(accepted bake)
 sampled=$(accepted report)
