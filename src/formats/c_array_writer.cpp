@@ -48,7 +48,7 @@ std::unique_ptr<TableWriter> MakeCArrayWriter() { return std::make_unique<CArray
 
 std::vector<TableFormat> CArrayFormats() {
   return {{"c-array", ".h", FixedStorage(ValueType::kFloat32), MakeCArrayWriter, ReadSourceTable,
-           false}};
+           false, true}};
 }
 
 }  // namespace lutbake

@@ -74,7 +74,7 @@ std::vector<TableFormat> IncFormats() {
        {std::pair{"inc", ValueType::kFloat32}, std::pair{"inc-half", ValueType::kHalf}}) {
     const ValueType type = storage;
     records.push_back({name, ".inc", FixedStorage(type), [type] { return MakeIncWriter(type); },
-                       ReadSourceTable, true});
+                       ReadSourceTable, true, true});
   }
   return records;
 }

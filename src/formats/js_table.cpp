@@ -151,9 +151,10 @@ std::vector<TableFormat> JsFormats() {
   for (const bool typescript : {false, true})
     for (const ValueType type : {ValueType::kFloat32, ValueType::kHalf}) {
       const std::string stem = typescript ? "ts" : "js";
-      records.push_back(
-          {type == ValueType::kHalf ? stem + "-half" : stem, "." + stem, FixedStorage(type),
-           [type, typescript] { return MakeJsWriter(type, typescript); }, ReadSourceTable, true});
+      records.push_back({type == ValueType::kHalf ? stem + "-half" : stem, "." + stem,
+                         FixedStorage(type),
+                         [type, typescript] { return MakeJsWriter(type, typescript); },
+                         ReadSourceTable, true, true});
     }
   return records;
 }

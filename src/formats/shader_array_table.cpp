@@ -134,7 +134,7 @@ std::vector<TableFormat> ShaderArrayFormats() {
     records.push_back({std::string(ToString(language)) + "-array", ShaderExtension(language),
                        FixedStorage(ValueType::kFloat32),
                        [language] { return MakeShaderArrayWriter(language); }, ReadSourceTable,
-                       true});
+                       true, true});
   return records;
 }
 

@@ -66,7 +66,7 @@ std::unique_ptr<TableWriter> MakeThreejsDfgWriter() { return std::make_unique<Th
 
 std::vector<TableFormat> ThreejsFormats() {
   return {{"threejs-dfg", ".js", FixedStorage(ValueType::kHalf), MakeThreejsDfgWriter,
-           ReadSourceTable, false}};
+           ReadSourceTable, false, true}};
 }
 
 }  // namespace lutbake

@@ -16,6 +16,7 @@
 
 #include "lutbake/core/hash.h"
 #include "lutbake/formats/binary_format.h"
+#include "lutbake/formats/format.h"
 #include "lutbake/formats/table_reader.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/integrators/fresnel_average.h"
@@ -230,9 +231,15 @@ class Checker {
     attempt(ktx2Path, [&] { ktx2 = ReadKtx2Table(ktx2Path); });
     attempt(ddsPath, [&] { dds = ReadDdsTable(ddsPath); });
     attempt(pngPath, [&] { png = ReadPngTable(pngPath); });
-    // The source embeddings (source_formats.h), float32 or half.
+    // The source embeddings (format.h's sourceText formats that bake
+    // writes), float32 or half: one file per extension.
     std::vector<std::pair<std::string, std::optional<Table>>> sources;
-    for (const char *extension : {".inc", ".js", ".ts", ".glsl", ".hlsl", ".wgsl", ".metal"}) {
+    std::vector<std::string> extensions;  // in the registry's order
+    for (const TableFormat &format : AllFormats())
+      if (format.bakeFormat && format.sourceText &&
+          std::find(extensions.begin(), extensions.end(), format.extension) == extensions.end())
+        extensions.push_back(format.extension);
+    for (const std::string &extension : extensions) {
       const std::string path = base.string() + extension;
       std::optional<Table> source;
       attempt(path, [&] { source = ReadSourceTable(path); });

@@ -34,6 +34,9 @@ struct TableFormat {
   // Offered by `bake --format`; the engine-specific layouts (c-array,
   // threejs-dfg) serve presets only.
   bool bakeFormat = true;
+  // Source text that embeds the values (.inc, JS/TS modules, shader
+  // arrays), read back by ReadSourceTable.
+  bool sourceText = false;
 };
 
 // Every format, in the order `bake --format` lists them.
