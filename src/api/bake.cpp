@@ -57,11 +57,7 @@ std::vector<std::string> DefaultTables() { return {"E", "Eavg", "Favg", "dfg"}; 
 
 BakeSettings SettingsOf(const BakeRequest &r) {
   BakeSettings settings;
-  settings.ndf = r.ndf.value_or(settings.ndf);
-  settings.smith = r.smith.value_or(settings.smith);
-  settings.fresnel = r.fresnel.value_or(settings.fresnel);
-  settings.sheenVisibility = r.sheenVisibility.value_or(settings.sheenVisibility);
-  settings.sheenAlpha = r.sheenAlpha.value_or(settings.sheenAlpha);
+  ApplyModels(r, &settings);
   if (r.size > 0) settings.size = r.size;
   if (r.etaSize > 0) settings.depthSize = r.etaSize;
   ApplySampling(r.sampling, &settings);

@@ -17,6 +17,17 @@ void ValidateTableNames(const BakeRequest &request);
 // its tables or files (bake_validation.cpp).
 void ValidateApplicability(const BakeRequest &request);
 
+// The models a request sets (BakeRequest, EvalRequest: optional ndf, smith,
+// fresnel, sheenVisibility, sheenAlpha) over `settings`' defaults.
+template <typename Request>
+void ApplyModels(const Request &r, BakeSettings *settings) {
+  settings->ndf = r.ndf.value_or(settings->ndf);
+  settings->smith = r.smith.value_or(settings->smith);
+  settings->fresnel = r.fresnel.value_or(settings->fresnel);
+  settings->sheenVisibility = r.sheenVisibility.value_or(settings->sheenVisibility);
+  settings->sheenAlpha = r.sheenAlpha.value_or(settings->sheenAlpha);
+}
+
 std::vector<std::string> DefaultFormats();  // exr, bin, header
 // "a,b,c", as a list option spells it.
 std::string JoinList(const std::vector<std::string> &items);

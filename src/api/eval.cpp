@@ -34,11 +34,7 @@ std::string ShortestDecimal(double v) {
 
 BakeSettings SettingsOf(const EvalRequest &r) {
   BakeSettings settings;
-  settings.ndf = r.ndf.value_or(settings.ndf);
-  settings.smith = r.smith.value_or(settings.smith);
-  settings.fresnel = r.fresnel.value_or(settings.fresnel);
-  settings.sheenVisibility = r.sheenVisibility.value_or(settings.sheenVisibility);
-  settings.sheenAlpha = r.sheenAlpha.value_or(settings.sheenAlpha);
+  ApplyModels(r, &settings);
   return settings;
 }
 

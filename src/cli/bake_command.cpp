@@ -160,20 +160,19 @@ void PrintBakedTable(const BakedTable &t) {
   const std::string depth = t.depth > 1 ? " x " + std::to_string(t.depth) : "";
   if (!t.storage.empty()) {  // a preset's texture
     const std::string size = std::to_string(t.width) + " x " + std::to_string(t.height) + depth;
-    std::snprintf(line, sizeof line,
-                  "%-28s %-13s %d channel(s) %-8s %7.3f s  error max %.2e (as stored)\n",
-                  t.name.c_str(), size.c_str(), t.channels, t.storage.c_str(), t.seconds,
-                  t.errorMax);
+    std::snprintf(
+        line, sizeof line, "%-28s %-13s %d channel(s) %-8s %7.3f s  error max %.2e (as stored)\n",
+        t.name.c_str(), size.c_str(), t.channels, t.storage.c_str(), t.seconds, t.errorMax);
   } else {
     const double texels = static_cast<double>(t.width) * t.height * t.depth;
-    std::snprintf(
-        line, sizeof line,
-        "%-5s %4d x %-4d%s samples/texel mean %-9.4g max %-9llu quadrature texels %-6llu"
-        " %7.3f s  error max %.2e  rms %.2e (float32 as stored; integration %.1e)\n",
-        t.name.c_str(), t.width, t.height, depth.c_str(), static_cast<double>(t.samples) / texels,
-        static_cast<unsigned long long>(t.maxTexelSamples),
-        static_cast<unsigned long long>(t.quadratureTexels), t.seconds, t.errorMax, t.errorRms,
-        t.integrationErrorMax);
+    std::snprintf(line, sizeof line,
+                  "%-5s %4d x %-4d%s samples/texel mean %-9.4g max %-9llu quadrature texels %-6llu"
+                  " %7.3f s  error max %.2e  rms %.2e (float32 as stored; integration %.1e)\n",
+                  t.name.c_str(), t.width, t.height, depth.c_str(),
+                  static_cast<double>(t.samples) / texels,
+                  static_cast<unsigned long long>(t.maxTexelSamples),
+                  static_cast<unsigned long long>(t.quadratureTexels), t.seconds, t.errorMax,
+                  t.errorRms, t.integrationErrorMax);
   }
   std::cerr << line;
 }
@@ -185,14 +184,7 @@ BakeRequest RequestOf(const BakeOptions &o, CLI::App &app) {
   r.outputDirectory = o.outDir;
   if (given("--tables")) r.tables = SplitList(o.tables);
   if (given("--format")) r.formats = SplitList(o.formats);
-  if (given("--ndf")) r.ndf = ParseNdf(o.ndf);
-  if (given("--smith")) r.smith = ParseSmith(o.smith);
-  if (given("--fresnel")) r.fresnel = ParseFresnel(o.fresnel);
-  SheenVisibility visibility = SheenVisibility::kCharlie;
-  SheenAlpha alpha = SheenAlpha::kLinear;
-  if (given("--sheen-visibility") && ParseSheenVisibility(o.sheenVisibility, &visibility))
-    r.sheenVisibility = visibility;
-  if (given("--sheen-alpha") && ParseSheenAlpha(o.sheenAlpha, &alpha)) r.sheenAlpha = alpha;
+  ModelsOf(o, app, &r);
   r.size = o.size;
   r.etaSize = o.etaSize;
   r.sampling = SamplingRequestOf(o.sampling, app);

@@ -42,6 +42,20 @@ NdfKind ParseNdf(const std::string &name);
 SmithForm ParseSmith(const std::string &name);
 FresnelModel ParseFresnel(const std::string &name);
 
+// The model options given (ndf, smith, fresnel, sheen-visibility,
+// sheen-alpha; already validated) into a request's optional models.
+template <typename Options, typename Request>
+void ModelsOf(const Options &o, CLI::App &app, Request *r) {
+  SheenVisibility visibility = SheenVisibility::kCharlie;
+  SheenAlpha alpha = SheenAlpha::kLinear;
+  if (app.count("--ndf")) r->ndf = ParseNdf(o.ndf);
+  if (app.count("--smith")) r->smith = ParseSmith(o.smith);
+  if (app.count("--fresnel")) r->fresnel = ParseFresnel(o.fresnel);
+  if (app.count("--sheen-visibility") && ParseSheenVisibility(o.sheenVisibility, &visibility))
+    r->sheenVisibility = visibility;
+  if (app.count("--sheen-alpha") && ParseSheenAlpha(o.sheenAlpha, &alpha)) r->sheenAlpha = alpha;
+}
+
 void SetupBakeCommand(CLI::App &app, BakeOptions &options);
 
 // Returns the process exit status: 0 success, 1 runtime failure (cannot

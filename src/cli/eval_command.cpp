@@ -38,7 +38,6 @@ CLI::Validator RealList(const RealRange &range) {
 
 // The request the options describe; `app` tells which options were given.
 EvalRequest RequestOf(const EvalOptions &o, CLI::App &app) {
-  const auto given = [&app](const char *flag) { return app.count(flag) > 0; };
   EvalRequest r;
   r.table = o.table;
   const std::pair<const char *, const std::string *> lists[] = {
@@ -52,14 +51,7 @@ EvalRequest RequestOf(const EvalOptions &o, CLI::App &app) {
     for (const std::string &item : r.spelling[option])
       r.coordinates[option].push_back(std::strtod(item.c_str(), nullptr));
   }
-  if (given("--ndf")) r.ndf = ParseNdf(o.ndf);
-  if (given("--smith")) r.smith = ParseSmith(o.smith);
-  if (given("--fresnel")) r.fresnel = ParseFresnel(o.fresnel);
-  SheenVisibility visibility = SheenVisibility::kCharlie;
-  SheenAlpha alpha = SheenAlpha::kLinear;
-  if (given("--sheen-visibility") && ParseSheenVisibility(o.sheenVisibility, &visibility))
-    r.sheenVisibility = visibility;
-  if (given("--sheen-alpha") && ParseSheenAlpha(o.sheenAlpha, &alpha)) r.sheenAlpha = alpha;
+  ModelsOf(o, app, &r);
   r.sampling = SamplingRequestOf(o.sampling, app);
   r.threads = o.threads;
   return r;

@@ -268,7 +268,6 @@ void OutputTransaction::CommitSet() {
 
 bool OutputTransaction::TryExchange(const std::vector<std::string> &oldSetNames,
                                     const std::string &manifestText) {
-  (void)oldSetNames;  // the exchange leaves them in the sibling, which is retired
   const fs::path directory = Canonical(directory_);
   std::error_code ec;
   const fs::path cwd = fs::current_path(ec);
@@ -292,8 +291,7 @@ bool OutputTransaction::TryExchange(const std::vector<std::string> &oldSetNames,
   };
   // The sibling looks like the directory: its mode, and (as root) its owner.
   ::chmod(sibling.c_str(), dirStat.st_mode & 07777);
-  if (::geteuid() == 0 && ::chown(sibling.c_str(), dirStat.st_uid, dirStat.st_gid) != 0) {
-  }
+  if (::geteuid() == 0) (void)!::chown(sibling.c_str(), dirStat.st_uid, dirStat.st_gid);
   // The foreign files, as hard links (the same files, not copies).
   for (const std::string &name : foreign_)
     if (::linkat(AT_FDCWD, (directory / name).c_str(), AT_FDCWD, (sibling / name).c_str(), 0) != 0)
