@@ -216,7 +216,7 @@ TEST(BrowserFurnace, WebGl2ShadesTheFurnaceFromTheEmittedModuleAndGlsl) {
       "white furnace within %.3g of 1\n",
       page["target"].get<std::string>().c_str(), page["renderer"].get<std::string>().c_str(), worst,
       worstAllowed, furnaceWorst);
-  fs::remove_all(d);
+  test::RemoveBrowserDirectory(d);
 }
 
 }  // namespace

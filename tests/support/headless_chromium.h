@@ -86,11 +86,34 @@ inline std::string RunPage(const std::filesystem::path &dir, std::string page,
     const long pid = std::atol(ReadWhole(pidFile).c_str());
     if (pid > 0) ::kill(static_cast<pid_t>(pid), SIGTERM);
   }
+  // Wait (at most 10 s) for them to be gone, so that the caller can remove
+  // `dir`: Chromium writes its profile while it shuts down.
+  for (const fs::path &pidFile : {chromiumPid, serverPid}) {
+    const long pid = std::atol(ReadWhole(pidFile).c_str());
+    const auto waitStart = std::chrono::steady_clock::now();
+    while (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) == 0 &&
+           std::chrono::steady_clock::now() - waitStart < std::chrono::seconds(10))
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
   const std::string body = ReadWhole(result);
   if (body.empty())
     *log = "no result from the page within the time; Chromium's log:\n" +
            ReadWhole(chromiumLog).substr(0, 4000);
   return body;
+}
+
+// Removes a directory a browser ran in. Chromium's helper processes can
+// still be writing its profile for a moment after the main one has ended
+// (a file vanishing under remove_all once failed a CI run), so retry for a
+// few seconds before giving up quietly: a temporary left behind is not a
+// test failure.
+inline void RemoveBrowserDirectory(const std::filesystem::path &dir) {
+  for (int attempt = 0; attempt < 50; ++attempt) {
+    std::error_code error;
+    std::filesystem::remove_all(dir, error);
+    if (!error) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
 }
 
 }  // namespace lutbake::test
