@@ -21,6 +21,8 @@ $SUDO apt-get install -y -qq --no-install-recommends \
 # validates it; headless Chromium compiles the WGSL with Tint (WebGPU on its
 # bundled SwiftShader Vulkan) and renders the WebGL2 furnace (SwiftShader GL).
 $SUDO apt-get install -y -qq --no-install-recommends glslang-tools spirv-tools chromium >/dev/null
+# zsh and fish: tests/cli/cli_docs_test.sh runs the generated completions in them.
+$SUDO apt-get install -y -qq --no-install-recommends zsh fish >/dev/null
 # numpy for Debian's python3: tests/presets/engine_generators_test.py reruns
 # the engines' run-time table generators (tests/presets/engine_generators.py).
 $SUDO apt-get install -y -qq --no-install-recommends python3-numpy >/dev/null
