@@ -150,33 +150,6 @@ std::function<void(const std::string &, double)> TerminalProgress() {
   };
 }
 
-// One table's summary line, as each finishes.
-void PrintBakedTable(const BakedTable &t) {
-  if (!t.closedForm.empty()) {
-    std::cerr << "Favg  closed form (every compensated material uses Schlick): Favg.h\n";
-    return;
-  }
-  char line[320];
-  const std::string depth = t.depth > 1 ? " x " + std::to_string(t.depth) : "";
-  if (!t.storage.empty()) {  // a preset's texture
-    const std::string size = std::to_string(t.width) + " x " + std::to_string(t.height) + depth;
-    std::snprintf(
-        line, sizeof line, "%-28s %-13s %d channel(s) %-8s %7.3f s  error max %.2e (as stored)\n",
-        t.name.c_str(), size.c_str(), t.channels, t.storage.c_str(), t.seconds, t.errorMax);
-  } else {
-    const double texels = static_cast<double>(t.width) * t.height * t.depth;
-    std::snprintf(line, sizeof line,
-                  "%-5s %4d x %-4d%s samples/texel mean %-9.4g max %-9llu quadrature texels %-6llu"
-                  " %7.3f s  error max %.2e  rms %.2e (float32 as stored; integration %.1e)\n",
-                  t.name.c_str(), t.width, t.height, depth.c_str(),
-                  static_cast<double>(t.samples) / texels,
-                  static_cast<unsigned long long>(t.maxTexelSamples),
-                  static_cast<unsigned long long>(t.quadratureTexels), t.seconds, t.errorMax,
-                  t.errorRms, t.integrationErrorMax);
-  }
-  std::cerr << line;
-}
-
 // The request the options describe; `app` tells which options were given.
 BakeRequest RequestOf(const BakeOptions &o, CLI::App &app) {
   const auto given = [&app](const char *flag) { return app.count(flag) > 0; };
@@ -203,7 +176,7 @@ BakeRequest RequestOf(const BakeOptions &o, CLI::App &app) {
   if (given("--files")) r.presetFiles = SplitList(o.presetFiles);
   r.progress = o.quiet ? nullptr : TerminalProgress();
   r.note = [](const std::string &line) { std::cerr << "lutbake bake: " << line << "\n"; };
-  if (!o.quiet) r.tableDone = PrintBakedTable;
+  if (!o.quiet) r.tableDone = [](const BakedTable &t) { std::cerr << TableSummaryLine(t) << "\n"; };
   return r;
 }
 
@@ -213,10 +186,6 @@ void PrintResult(const BakeResult &result, bool json, bool quiet) {
     for (const std::string &line : result.nothingToBake) std::cerr << "  " << line << "\n";
     return;
   }
-  if (!result.foreignFiles.empty())
-    std::cerr << "lutbake bake: " << result.outputDirectory << " also holds "
-              << result.foreignFiles.size() << " file(s) lutbake did not write, left as they were: "
-              << JoinNames(result.foreignFiles) << "\n";
   if (result.tolerance > 0.0 && !quiet) {
     double worst = 0.0;
     for (const BakedTable &t : result.tables) worst = std::max(worst, t.integrationErrorMax);
@@ -227,6 +196,7 @@ void PrintResult(const BakeResult &result, bool json, bool quiet) {
                   result.tolerance, worst, result.seconds);
     std::cerr << line;
   }
+  if (!quiet) std::cerr << WrittenFilesText(result);
   if (json) std::cout << result.json << "\n";
 }
 

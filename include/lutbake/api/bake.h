@@ -145,6 +145,19 @@ struct BakeResult {
 
 BakeResult Bake(const BakeRequest &request);
 
+// What the command line prints as a table finishes: one line, in columns
+// (name, size, how it was integrated, seconds, the stored bounds), e.g.
+//   "E             32 x 32         quadrature               0.040 s  error max
+//    3.87e-08  rms 1.90e-08  (float32 as stored; integration 8.9e-09)"
+// A sampled table says its estimator and samples per texel; a preset's
+// texture its channels and storage; a closed form what it replaced.
+std::string TableSummaryLine(const BakedTable &table);
+
+// The files a bake wrote, for the end of its output: "wrote 12 files to
+// out: E.exr, E.bin, ..." plus, on their own lines, the previous set's files
+// it removed and the foreign files it left alone.
+std::string WrittenFilesText(const BakeResult &result);
+
 // The `lutbake bake` command line that asks for what `request` asks:
 // "lutbake bake --out DIR --tables E,dfg --format exr,header ...", options
 // in the order of `lutbake bake --help`, only those set.
