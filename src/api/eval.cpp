@@ -78,9 +78,12 @@ void CheckCoordinatesApply(const EvalRequest &r, const TableDefinition &table,
       if (std::find(options.begin(), options.end(), option) != options.end())
         users += (users.empty() ? "" : ", ") + std::string(other->Name());
     }
-    if (users.empty())
-      throw UsageError("--" + option + " is not a coordinate of any table; accepted: " +
-                       "mu, roughness, sigma, f0, eta, k, tint");
+    if (users.empty()) {
+      std::vector<std::string> accepted;
+      for (const EvalCoordinateOption &o : EvalCoordinateOptions()) accepted.push_back(o.option);
+      throw UsageError("--" + option +
+                       " is not a coordinate of any table; accepted: " + JoinNames(accepted));
+    }
     throw UsageError("--" + option + " does not apply to --table " + name +
                      "; it applies only to --table " + users);
   }
@@ -121,6 +124,45 @@ std::string EstimatorUsed(const PointValue &v, const BakeSettings &s) {
 }
 
 }  // namespace
+
+std::vector<EvalCoordinateOption> EvalCoordinateOptions() {
+  std::vector<EvalCoordinateOption> options;
+  std::vector<std::vector<PointCoordinate>> seen;  // per option, as the tables give it
+  for (const TableDefinition *table : AllTables())
+    for (FresnelModel model : {FresnelModel::kSchlick, FresnelModel::kDielectric,
+                               FresnelModel::kConductor, FresnelModel::kF82}) {
+      BakeSettings settings;
+      settings.fresnel = model;
+      for (const PointCoordinate &c : table->Coordinates(settings)) {
+        size_t i = 0;
+        while (i < options.size() && options[i].option != c.option) ++i;
+        if (i == options.size()) {
+          options.push_back({c.option, c.meaning, {}, c.min, c.max, c.zeroAllowed, ""});
+          seen.emplace_back();
+        }
+        EvalCoordinateOption &o = options[i];
+        if (std::find(o.tables.begin(), o.tables.end(), table->Name()) == o.tables.end())
+          o.tables.push_back(table->Name());
+        o.min = std::min(o.min, c.min);
+        o.max = std::max(o.max, c.max);
+        o.zeroAllowed = o.zeroAllowed || c.zeroAllowed;
+        seen[i].push_back(c);
+      }
+    }
+  // The words of the range: those of a table whose range is the widest
+  // (without its table-specific remark in parentheses), else the numbers.
+  for (size_t i = 0; i < options.size(); ++i) {
+    EvalCoordinateOption &o = options[i];
+    for (const PointCoordinate &c : seen[i])
+      if (o.accepted.empty() && c.min <= o.min && c.max >= o.max &&
+          (!o.zeroAllowed || c.Accepts(0.0)))
+        o.accepted = c.accepted.substr(0, c.accepted.find(" ("));
+    if (o.accepted.empty())
+      o.accepted = "comma-separated numbers from " + ShortestDecimal(o.min) + " to " +
+                   ShortestDecimal(o.max);
+  }
+  return options;
+}
 
 EvalResult Evaluate(const EvalRequest &r) {
   const TableDefinition *found = FindTable(r.table);

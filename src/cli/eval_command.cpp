@@ -12,42 +12,33 @@ namespace lutbake::cli {
 
 namespace {
 
-struct RealRange {
-  double lo, hi;
-  std::string accepted;
-};
-
-// A comma-separated list of reals, each finite and in range (each table
-// narrows the range further: lutbake::Evaluate says so).
-CLI::Validator RealList(const RealRange &range) {
+// A comma-separated list of reals, each finite and in the option's widest
+// range (each table narrows it further: lutbake::Evaluate says so).
+CLI::Validator RealList(const EvalCoordinateOption &o) {
   return CLI::Validator(
-      [range](std::string &value) -> std::string {
+      [o](std::string &value) -> std::string {
         const std::vector<std::string> items = SplitList(value);
-        if (items.empty()) return "empty list; accepted: " + range.accepted;
+        if (items.empty()) return "empty list; accepted: " + o.accepted;
         if (items.size() > kMaxEvalPoints)
           return std::to_string(items.size()) + " values; accepted: at most " +
                  std::to_string(kMaxEvalPoints);
         for (const std::string &item : items)
-          if (std::string problem = RealNumberProblem(item, range.lo, range.hi, range.accepted);
+          if (std::string problem =
+                  RealNumberProblem(item, o.zeroAllowed ? 0.0 : o.min, o.max, o.accepted);
               !problem.empty())
             return problem;
         return {};
       },
-      range.accepted);
+      o.accepted);
 }
 
 // The request the options describe; `app` tells which options were given.
 EvalRequest RequestOf(const EvalOptions &o, CLI::App &app) {
   EvalRequest r;
   r.table = o.table;
-  const std::pair<const char *, const std::string *> lists[] = {
-      {"mu", &o.mu},      {"roughness", &o.perceptualRoughness},
-      {"f0", &o.f0},      {"eta", &o.eta},
-      {"k", &o.k},        {"tint", &o.tint},
-      {"sigma", &o.sigma}};
-  for (const auto &[option, text] : lists) {
-    if (text->empty()) continue;
-    r.spelling[option] = SplitList(*text);
+  for (const auto &[option, text] : o.coordinates) {
+    if (text.empty()) continue;
+    r.spelling[option] = SplitList(text);
     for (const std::string &item : r.spelling[option])
       r.coordinates[option].push_back(std::strtod(item.c_str(), nullptr));
   }
@@ -82,40 +73,16 @@ void SetupEvalCommand(CLI::App &app, EvalOptions &o) {
   app.add_option("--table", o.table, "The table to evaluate")
       ->required()
       ->check(OneOf(TableNames()));
-  // Each option's widest range here; each table narrows it (its
-  // PointCoordinate), and says so.
-  app.add_option("--mu", o.mu, "E, dfg: view cosines, comma-separated (0 = the grazing limit)")
-      ->type_name("LIST")
-      ->check(RealList({0.0, 1.0, "comma-separated numbers in [0, 1]"}));
-  app.add_option("--roughness", o.perceptualRoughness,
-                 "E, Eavg, dfg: perceptual roughness r (alpha = r^2), comma-separated; 0 is the "
-                 "mirror, exact")
-      ->type_name("LIST")
-      ->check(RealList({0.0, 1.0, "comma-separated numbers in [0, 1]"}));
-  app.add_option("--sigma", o.sigma,
-                 "oren_nayar_E, oren_nayar_full_E: the facet slope angle's standard deviation, "
-                 "radians, comma-separated")
-      ->type_name("LIST")
-      ->check(RealList({0.0, 0.5 * kPi, "comma-separated numbers in [0, pi/2]"}));
+  // The coordinates, from the table definitions: each option's widest range
+  // here; each table narrows it (its PointCoordinate), and says so.
+  for (const EvalCoordinateOption &c : EvalCoordinateOptions())
+    app.add_option("--" + c.option, o.coordinates[c.option],
+                   c.meaning + ", comma-separated; tables " + JoinNames(c.tables))
+        ->type_name("LIST")
+        ->check(RealList(c));
   app.add_option("--fresnel", o.fresnel, "Favg: the Fresnel model")
       ->capture_default_str()
       ->check(OneOf({"schlick", "dielectric", "conductor", "f82"}));
-  app.add_option("--f0", o.f0,
-                 "Favg with --fresnel schlick or f82: reflectance at normal incidence")
-      ->type_name("LIST")
-      ->check(RealList({0.0, 1.0, "comma-separated numbers in [0, 1]"}));
-  app.add_option("--tint", o.tint,
-                 "Favg with --fresnel f82: the F82 tint (F at mu = 1/7 over Schlick's there)")
-      ->type_name("LIST")
-      ->check(RealList({0.0, 1.0, "comma-separated numbers in [0, 1]"}));
-  app.add_option("--eta", o.eta,
-                 "Favg with --fresnel dielectric or conductor: relative index of refraction "
-                 "(dielectric eta < 1: light inside the denser medium, total internal reflection)")
-      ->type_name("LIST")
-      ->check(RealList({1e-3, 1e3, "comma-separated numbers from 1e-3 to 1000"}));
-  app.add_option("--k", o.k, "Favg with --fresnel conductor: extinction coefficient (default 0)")
-      ->type_name("LIST")
-      ->check(RealList({0.0, 1e3, "comma-separated numbers from 0 to 1000"}));
   AddModelOptions(app, o.ndf, o.smith);
   AddSheenOptions(app, o.sheenVisibility, o.sheenAlpha);
   AddSamplingOptions(app, o.sampling, "point");

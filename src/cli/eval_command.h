@@ -4,6 +4,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <map>
 #include <string>
 
 #include "sampling_options.h"
@@ -12,10 +13,9 @@ namespace lutbake::cli {
 
 struct EvalOptions {
   std::string table;
-  std::string mu;  // comma-separated lists of points
-  std::string perceptualRoughness;
-  std::string f0, eta, k, tint;  // Favg parameters
-  std::string sigma;             // Oren-Nayar roughness, radians
+  // The coordinates' comma-separated lists of points, by option name
+  // ("mu", "roughness", ...: lutbake::EvalCoordinateOptions).
+  std::map<std::string, std::string> coordinates;
   std::string ndf = "ggx";
   std::string smith = "correlated";
   std::string fresnel = "schlick";

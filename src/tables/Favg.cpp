@@ -35,9 +35,11 @@ PointValue EvaluateFresnelAverage(FresnelModel model, double x, double y) {
 
 namespace {
 
-PointCoordinate Coordinate(const char *option, double min, double max, const char *accepted) {
+PointCoordinate Coordinate(const char *option, double min, double max, const char *accepted,
+                           const char *meaning) {
   PointCoordinate c;
   c.option = option;
+  c.meaning = meaning;
   c.min = min;
   c.max = max;
   c.accepted = accepted;
@@ -56,19 +58,25 @@ class FresnelAverage final : public TableDefinition {
   }
   std::vector<PointCoordinate> Coordinates(const BakeSettings &s) const override {
     const PointCoordinate eta =
-        Coordinate("eta", 1e-3, 1e3, "comma-separated numbers from 1e-3 to 1000");
+        Coordinate("eta", 1e-3, 1e3, "comma-separated numbers from 1e-3 to 1000",
+                   "relative index of refraction (dielectric eta < 1: light inside the denser "
+                   "medium, total internal reflection)");
     switch (s.fresnel) {
       case FresnelModel::kSchlick:
-        return {Coordinate("f0", 0.0, 1.0, "comma-separated numbers in [0, 1]")};
+        return {Coordinate("f0", 0.0, 1.0, "comma-separated numbers in [0, 1]",
+                           "reflectance at normal incidence")};
       case FresnelModel::kDielectric: return {eta};
       case FresnelModel::kConductor: {
-        PointCoordinate k = Coordinate("k", 0.0, 1e3, "comma-separated numbers from 0 to 1000");
+        PointCoordinate k = Coordinate("k", 0.0, 1e3, "comma-separated numbers from 0 to 1000",
+                                       "a conductor's extinction coefficient (default 0)");
         k.required = false;
         return {eta, k};
       }
       case FresnelModel::kF82:
-        return {Coordinate("f0", 0.0, 1.0, "comma-separated numbers in [0, 1]"),
-                Coordinate("tint", 0.0, 1.0, "comma-separated numbers in [0, 1]")};
+        return {Coordinate("f0", 0.0, 1.0, "comma-separated numbers in [0, 1]",
+                           "reflectance at normal incidence"),
+                Coordinate("tint", 0.0, 1.0, "comma-separated numbers in [0, 1]",
+                           "the F82 tint (F at mu = 1/7 over Schlick's there)")};
     }
     return {};
   }

@@ -58,6 +58,7 @@ PointCoordinate MicrofacetTable::RoughnessCoordinate() {
   c.max = 1.0;
   c.zeroAllowed = true;
   c.accepted = "comma-separated numbers: 0 (a mirror) or 1e-12 to 1";
+  c.meaning = "perceptual roughness r (alpha = r^2; 0 is the mirror, exact)";
   return c;
 }
 
@@ -65,6 +66,7 @@ PointCoordinate MicrofacetTable::MuCoordinate() {
   PointCoordinate c;
   c.option = "mu";
   c.accepted = "comma-separated numbers in [0, 1]";
+  c.meaning = "view cosine mu = n.v (0: the grazing limit)";
   return c;
 }
 

@@ -59,6 +59,7 @@ class OrenNayarAlbedo final : public TableDefinition {
     sigma.option = "sigma";
     sigma.max = kMaxSigma;
     sigma.accepted = "comma-separated numbers in [0, pi/2] (radians)";
+    sigma.meaning = "the facet slope angle's standard deviation, radians";
     return {mu, sigma};
   }
   std::vector<std::string> ModelOptions() const override { return {}; }

@@ -53,6 +53,21 @@ struct EvalRequest {
   int threads = 0;  // 0: all cores; the values do not depend on it
 };
 
+// One coordinate option of eval (--mu, --roughness, ...), gathered from
+// every table definition's coordinates (under every Fresnel model): what it
+// is, the tables that take it, and its widest range (each table narrows it,
+// and Evaluate says so). The command line's options and help are these.
+struct EvalCoordinateOption {
+  std::string option;   // "mu"
+  std::string meaning;  // the first table's (registry order) meaning
+  std::vector<std::string> tables;
+  double min = 0.0, max = 1.0;
+  bool zeroAllowed = false;
+  std::string accepted;  // the widest range in words
+  bool Accepts(double v) const { return (v >= min && v <= max) || (zeroAllowed && v == 0.0); }
+};
+std::vector<EvalCoordinateOption> EvalCoordinateOptions();
+
 struct EvalPoint {
   std::vector<double> coordinates;     // in EvalResult::coordinateNames' order
   std::vector<double> values, errors;  // per channel

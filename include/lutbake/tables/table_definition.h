@@ -47,7 +47,10 @@ struct PointCoordinate {
   double min = 0.0, max = 1.0;
   bool zeroAllowed = false;  // 0 accepted besides [min, max]
   std::string accepted;      // the accepted values in words, for messages
-  bool required = true;      // false: 0 when not given (a conductor's k)
+  // What the coordinate is, for eval's help ("view cosine mu = n.v"); the
+  // first table (registry order) with the option gives its help.
+  std::string meaning;
+  bool required = true;  // false: 0 when not given (a conductor's k)
   bool Accepts(double v) const { return (v >= min && v <= max) || (zeroAllowed && v == 0.0); }
 };
 
