@@ -1,5 +1,6 @@
 #include "app.h"
 
+#include <algorithm>
 #include <iostream>
 
 #include "cli_util.h"
@@ -106,6 +107,41 @@ std::unique_ptr<LutbakeApp> MakeLutbakeApp() {
   return cli;
 }
 
+namespace {
+
+// CLI11's message for `e`, said as a person would: the argument that is no
+// option (and the option it is near), the option given twice or without its
+// value, what a missing required option or argument is.
+std::string ParseMessage(const CLI::ParseError &e, CLI::App &app, CLI::App &command) {
+  const std::string what = e.what();
+  const std::string name = what.substr(0, std::min(what.find(':'), what.find(" is required")));
+  const CLI::Option *option = command.get_option_no_throw(name);
+  // An unknown option first: it may be why a required one is missing.
+  std::vector<std::string> options;
+  for (const CLI::Option *o : command.get_options())
+    for (const std::string &l : o->get_lnames()) options.push_back("--" + l);
+  const std::vector<std::string> extra = app.remaining(true);
+  for (const std::string &arg : extra)
+    if (arg.size() > 1 && arg[0] == '-')
+      return "'" + arg + "' is not an option of " + command.get_name() +
+             DidYouMean(arg.substr(0, arg.find('=')), options);
+  if (dynamic_cast<const CLI::ExtrasError *>(&e))
+    return "'" + (extra.empty() ? what : extra[0]) +
+           "' follows no option that takes it (a list of values is one comma-separated word)";
+  if (dynamic_cast<const CLI::ArgumentMismatch *>(&e) && what.find("At Most") != what.npos)
+    return name + " is given more than once (a list of values is one comma-separated word)";
+  if (dynamic_cast<const CLI::ArgumentMismatch *>(&e) && option) {
+    const std::string value = HelpFormatter().make_option_opts(option);
+    return name + " needs a value:" + value.substr(0, value.find(" (required)"));
+  }
+  if (dynamic_cast<const CLI::RequiredError *>(&e) && option)
+    return (option->get_positional() ? option->get_type_name() : name) +
+           " is required: " + option->get_description();
+  return what;
+}
+
+}  // namespace
+
 int ReportParseError(LutbakeApp &cli, const CLI::ParseError &e, int argc, const char *const *argv) {
   CLI::App &app = cli.app;
   if (dynamic_cast<const CLI::CallForHelp *>(&e) || dynamic_cast<const CLI::CallForAllHelp *>(&e) ||
@@ -125,13 +161,9 @@ int ReportParseError(LutbakeApp &cli, const CLI::ParseError &e, int argc, const 
     std::cerr << "Run 'lutbake COMMAND --help' for the accepted options.\n";
     return 2;
   }
-  std::cerr << "lutbake: " << e.what() << "\n";
-  // Name the subcommand being parsed, if any, in the pointer to its help.
-  std::string command = "COMMAND";
-  for (const CLI::App *sub : app.get_subcommands({}))
-    for (int i = 1; i < argc; ++i)
-      if (argv[i] == sub->get_name()) command = sub->get_name();
-  std::cerr << "Run 'lutbake " << command << " --help' for the accepted options.\n";
+  CLI::App &command = *app.get_subcommands().back();
+  std::cerr << "lutbake " << command.get_name() << ": " << ParseMessage(e, app, command) << "\n"
+            << "Run 'lutbake " << command.get_name() << " --help' for the accepted options.\n";
   return 2;
 }
 
