@@ -2,6 +2,7 @@
 
 #include <tbb/global_control.h>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
@@ -86,14 +87,48 @@ void SummariseReport(CheckOutcome *outcome) {
   if (outcome->passed) outcome->text += "all checks passed\n";
 }
 
-void SummarisePreset(CheckOutcome *outcome) {
+// A preset directory's check in the same shape as a set's (one JSON shape
+// for `check`): each file's values held to the integral is one check,
+// subject the file, check "values", worst |stored - integral| against the
+// errorMax it states; "preset" names the preset.
+void SummarisePreset(const std::string &dir, double seconds, CheckOutcome *outcome) {
   const PresetCheck &check = outcome->preset;
   outcome->passed = check.pass;
-  outcome->json = check.json;
-  for (const PresetFileCheck &f : check.files)
-    outcome->text += Printed("%-4s %-40s max |stored - integral| %.2e (errorMax %.2e)%s%s\n",
+  nlohmann::ordered_json out;
+  out["dir"] = dir;
+  out["preset"] = nlohmann::ordered_json::parse(check.json).value("preset", "");
+  out["passed"] = check.pass;
+  out["failed"] = nlohmann::ordered_json::array();
+  out["seconds"] = seconds;
+  out["referenceEvaluations"] = 0;
+  out["files"] = nlohmann::ordered_json::array();
+  out["checks"] = nlohmann::ordered_json::array();
+  for (const PresetFileCheck &f : check.files) {
+    const std::string path = (std::filesystem::path(dir) / f.file).string();
+    out["files"].push_back(path);
+    if (!f.pass) out["failed"].push_back(f.file + " values");
+    nlohmann::ordered_json c;
+    c["subject"] = f.file;
+    c["check"] = "values";
+    c["status"] = f.pass ? "pass" : "fail";
+    c["detail"] = f.pass
+                      ? Printed("max |stored - integral| %.2e (errorMax %.2e)", f.worst, f.errorMax)
+                      : f.problem;
+    c["worst"] = f.worst;
+    c["allowed"] = f.errorMax;
+    c["at"] = nlohmann::ordered_json::object();
+    out["checks"].push_back(c);
+    if (!f.pass) outcome->failureText += "  " + f.file + " values: " + f.problem + "\n";
+    outcome->text += Printed("  %s  %-40s max |stored - integral| %.2e (errorMax %.2e)%s%s\n",
                              f.pass ? "pass" : "FAIL", f.file.c_str(), f.worst, f.errorMax,
                              f.pass ? "" : ": ", f.problem.c_str());
+  }
+  for (const auto &failed : out["failed"]) outcome->failed.push_back(failed.get<std::string>());
+  outcome->json = out.dump(2);
+  outcome->text = Printed("lutbake check %s (preset %s): %zu file%s, %zu failed (%.1f s)\n",
+                          dir.c_str(), out["preset"].get<std::string>().c_str(), check.files.size(),
+                          check.files.size() == 1 ? "" : "s", outcome->failed.size(), seconds) +
+                  outcome->text + (outcome->passed ? "all checks passed\n" : "");
 }
 
 }  // namespace
@@ -110,8 +145,11 @@ CheckOutcome Check(const CheckRequest &request) {
   CheckOutcome outcome;
   if (fs::exists(fs::path(request.dir) / "preset.json", ec)) {
     outcome.isPreset = true;
+    const auto start = std::chrono::steady_clock::now();
     outcome.preset = CheckPresetDirectory(request.dir);
-    SummarisePreset(&outcome);
+    SummarisePreset(request.dir,
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                    &outcome);
     return outcome;
   }
   CheckOptions options;

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "lutbake/api/bake.h"
 #include "lutbake/core/error.h"
@@ -78,6 +79,51 @@ TEST(CheckApi, APresetDirectoryIsCheckedAsOne) {
   request.dir = dir.string();
   EXPECT_THROW(Check(request), IoError);  // preset.json names no preset
   fs::remove_all(dir);
+}
+
+// One JSON shape for check: a preset directory's report has the keys of a
+// set's (and "preset"), and its checks the keys of a set's checks.
+TEST(CheckApi, APresetDirectoryReportsInTheShapeOfASet) {
+  const fs::path set = test::Scratch("check_api_shape_set"),
+                 preset = test::Scratch("check_api_shape_preset");
+  BakeRequest bake;
+  bake.tables = {"E"};
+  bake.formats = {"exr"};
+  bake.size = 8;
+  bake.outputDirectory = set.string();
+  Bake(bake);
+  BakeRequest presetBake;
+  presetBake.preset = "threejs";
+  presetBake.outputDirectory = preset.string();
+  Bake(presetBake);
+  CheckRequest request;
+  request.points = 8;
+  request.furnaceGrid = 5;
+  request.dir = set.string();
+  const nlohmann::json a = nlohmann::json::parse(Check(request).json);
+  request.dir = preset.string();
+  const CheckOutcome presetOutcome = Check(request);
+  EXPECT_TRUE(presetOutcome.passed) << presetOutcome.text;
+  const nlohmann::json b = nlohmann::json::parse(presetOutcome.json);
+  const auto keys = [](const nlohmann::json &object) {
+    std::set<std::string> names;
+    for (const auto &item : object.items())
+      if (item.key() != "preset") names.insert(item.key());
+    return names;
+  };
+  EXPECT_EQ(keys(a), keys(b)) << b.dump(1);
+  EXPECT_EQ(b["preset"], "threejs");
+  EXPECT_EQ(b["passed"], true);
+  ASSERT_EQ(b["checks"].size(), 1u);
+  std::set<std::string> checkKeys = keys(a["checks"][0]), presetCheckKeys = keys(b["checks"][0]);
+  checkKeys.erase("allowed");  // a set's checks without a numeric limit leave it out
+  presetCheckKeys.erase("allowed");
+  EXPECT_EQ(checkKeys, presetCheckKeys);
+  EXPECT_EQ(b["checks"][0]["status"], "pass");
+  EXPECT_LE(b["checks"][0]["worst"].get<double>(), b["checks"][0]["allowed"].get<double>());
+  EXPECT_GT(b["checks"][0]["worst"].get<double>(), 0.0);  // half floats: never exact
+  fs::remove_all(set);
+  fs::remove_all(preset);
 }
 
 }  // namespace
