@@ -119,7 +119,7 @@ void SummarisePreset(const std::string &dir, double seconds, CheckOutcome *outco
     c["at"] = nlohmann::ordered_json::object();
     out["checks"].push_back(c);
     if (!f.pass) outcome->failureText += "  " + f.file + " values: " + f.problem + "\n";
-    outcome->text += Printed("  %s  %-40s max |stored - integral| %.2e (errorMax %.2e)%s%s\n",
+    outcome->text += Printed("%-4s %-40s max |stored - integral| %.2e (errorMax %.2e)%s%s\n",
                              f.pass ? "pass" : "FAIL", f.file.c_str(), f.worst, f.errorMax,
                              f.pass ? "" : ": ", f.problem.c_str());
   }

@@ -197,7 +197,9 @@ BakeResult BakePreset(const BakeRequest &r) {
   const WriteOptions writeOptions;
   for (const PresetTexture *texture : textures) {
     const auto textureStart = std::chrono::steady_clock::now();
-    Table table = BakePresetTexture(*texture, preset->name, r.cancellation);
+    Table table = BakePresetTexture(*texture, preset->name, r.cancellation, [&](double f) {
+      if (r.progress) r.progress(texture->file, f);
+    });
     table.metadata.emplace_back("lutbakeVersion", LutbakeVersion());
     table.metadata.emplace_back("commandLine", r.commandLine);
     const TableFormat &format = FormatOf(*texture);

@@ -11,6 +11,7 @@
 #include "cli_util.h"
 #include "interrupt.h"
 #include "lutbake/api/names.h"
+#include "lutbake/api/progress.h"
 
 namespace lutbake::cli {
 
@@ -125,31 +126,6 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
 
 namespace {
 
-// On a terminal, a table's progress as one line rewritten in place. The
-// bake reports from its worker threads: one at a time draws.
-std::function<void(const std::string &, double)> TerminalProgress() {
-  if (!::isatty(STDERR_FILENO)) return {};
-  struct Shown {
-    std::mutex mutex;
-    std::string name;
-    int percent = -1;
-  };
-  auto shown = std::make_shared<Shown>();
-  return [shown](const std::string &name, double fraction) {
-    const int percent = std::clamp(static_cast<int>(fraction * 100.0), 0, 100);
-    std::lock_guard<std::mutex> lock(shown->mutex);
-    if (name != shown->name) shown->percent = -1;
-    shown->name = name;
-    if (percent <= shown->percent) return;
-    shown->percent = percent;
-    const int filled = percent / 4;
-    std::fprintf(stderr, "\r%-12s [%s%s] %3d%%", name.c_str(), std::string(filled, '#').c_str(),
-                 std::string(25 - filled, ' ').c_str(), percent);
-    if (percent >= 100) std::fprintf(stderr, "\r%60s\r", "");
-    std::fflush(stderr);
-  };
-}
-
 // The request the options describe; `app` tells which options were given.
 BakeRequest RequestOf(const BakeOptions &o, CLI::App &app) {
   const auto given = [&app](const char *flag) { return app.count(flag) > 0; };
@@ -174,9 +150,17 @@ BakeRequest RequestOf(const BakeOptions &o, CLI::App &app) {
   r.skipUnsupported = o.skipUnsupported;
   r.preset = o.preset;
   if (given("--files")) r.presetFiles = SplitList(o.presetFiles);
-  r.progress = o.quiet ? nullptr : TerminalProgress();
+  // A bar on a terminal, a line every few seconds in a log; cleared for each
+  // table's summary line.
+  auto shown =
+      std::make_shared<ProgressPrinter>("lutbake bake", ProgressPrinter::StyleFor(stderr, o.quiet));
+  r.progress = [shown](const std::string &table, double f) { shown->Update(table, f); };
   r.note = [](const std::string &line) { std::cerr << "lutbake bake: " << line << "\n"; };
-  if (!o.quiet) r.tableDone = [](const BakedTable &t) { std::cerr << TableSummaryLine(t) << "\n"; };
+  if (!o.quiet)
+    r.tableDone = [shown](const BakedTable &t) {
+      shown->Clear();
+      std::cerr << TableSummaryLine(t) << "\n";
+    };
   return r;
 }
 

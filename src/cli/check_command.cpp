@@ -1,11 +1,10 @@
 #include "check_command.h"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <iostream>
 
 #include "cli_util.h"
+#include "lutbake/api/progress.h"
 
 namespace lutbake::cli {
 
@@ -37,15 +36,12 @@ void SetupCheckCommand(CLI::App &app, CheckCommandOptions &o) {
 
 int RunCheck(const CheckCommandOptions &o) {
   CheckRequest request = o.request;
-  const bool tty = !o.quiet && ::isatty(STDERR_FILENO) != 0;
-  if (tty)
-    request.progress = [](double fraction) {
-      std::fprintf(stderr, "\rlutbake check: quadrature reference %3.0f%%", 100.0 * fraction);
-    };
+  ProgressPrinter shown("lutbake check", ProgressPrinter::StyleFor(stderr, o.quiet));
+  request.progress = [&shown](double f) { shown.Update("quadrature reference", f); };
   bool passed = false;
   const int status = RunLibraryCall("check", o.request.dir, [&] {
     const CheckOutcome outcome = Check(request);
-    if (tty && !outcome.isPreset) std::fprintf(stderr, "\r%60s\r", "");
+    shown.Clear();
     std::cout << (o.json ? outcome.json + "\n" : outcome.text);
     if (!outcome.failed.empty())
       std::cerr << "lutbake check: FAILED: " << JoinNames(outcome.failed) << "\n"

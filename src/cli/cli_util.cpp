@@ -1,5 +1,7 @@
 #include "cli_util.h"
 
+#include <unistd.h>
+
 #include <iostream>
 #include <sstream>
 
@@ -98,18 +100,21 @@ void AddThreadsOption(CLI::App &app, int &threads, const std::string &threadsHel
 
 int RunLibraryCall(const std::string &command, const std::string &outDir,
                    const std::function<void()> &call) {
+  // On a terminal a progress bar may be drawn: the error line replaces it.
+  const std::string start = "lutbake " + command + ": ";
+  const std::string line = (::isatty(STDERR_FILENO) != 0 ? "\r\033[K" : "") + start;
   try {
     call();
     return 0;
   } catch (const Cancelled &c) {
-    std::cerr << "lutbake " << command << ": interrupted by " << SignalName(c.reason())
-              << "; nothing written to " << outDir << "\n";
+    std::cerr << line << "interrupted by " << SignalName(c.reason()) << "; nothing written to "
+              << outDir << "\n";
     return 128 + c.reason();
   } catch (const Error &e) {
-    std::cerr << "lutbake " << command << ": " << e.what() << "\n";
+    std::cerr << line << e.what() << "\n";
     return e.kind() == Error::Kind::kUsage ? 2 : 1;
   } catch (const std::bad_alloc &) {
-    std::cerr << "lutbake " << command << ": out of memory\n";
+    std::cerr << line << "out of memory\n";
     return 1;
   }
 }

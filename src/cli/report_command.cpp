@@ -1,12 +1,11 @@
 #include "report_command.h"
 
-#include <unistd.h>
-
 #include <iostream>
 
 #include "bake_command.h"
 #include "cli_util.h"
 #include "interrupt.h"
+#include "lutbake/api/progress.h"
 #include "lutbake/api/report.h"
 
 namespace lutbake::cli {
@@ -54,20 +53,13 @@ int RunReport(const ReportOptions &o) {
   // line, nothing written and the directory removed if this run made it.
   const InterruptGuard interrupt;
   r.cancellation = &interrupt.token();
-  // A progress line, rewritten in place, only when stderr is a terminal;
-  // cleared when the measuring ends, however it ends.
-  const bool tty = !o.quiet && ::isatty(STDERR_FILENO) != 0;
-  if (tty)
-    r.progress = [](const std::string &line) { std::cerr << "\r\033[K" << line << std::flush; };
+  // A progress line, rewritten in place on a terminal, every few seconds in a
+  // log; cleared when the measuring ends, however it ends.
+  ProgressPrinter shown("lutbake report", ProgressPrinter::StyleFor(stderr, o.quiet));
+  r.progress = [&shown](const std::string &line) { shown.Status(line); };
   return RunLibraryCall("report", o.outDir, [&] {
-    size_t runs = 0;
-    try {
-      runs = Report(r).rows.size();
-    } catch (...) {
-      if (tty) std::cerr << "\r\033[K";
-      throw;
-    }
-    if (tty) std::cerr << "\r\033[K";
+    const size_t runs = Report(r).rows.size();
+    shown.Clear();
     if (!o.quiet)
       std::cerr << "lutbake report: " << runs << " runs; wrote report.csv, report.md, "
                 << "report.svg in " << o.outDir << "\n";

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <utility>
 
@@ -159,7 +160,8 @@ PointValue DisneyDiffuseAlbedo(double mu_o, double perceptualRoughness) {
 }  // namespace
 
 Table BakePresetTexture(const PresetTexture &texture, const std::string &presetName,
-                        const CancellationToken *cancellation) {
+                        const CancellationToken *cancellation,
+                        const std::function<void(double fraction)> &progress) {
   if (texture.axes.empty() || texture.axes.size() > 3)
     throw std::invalid_argument(texture.file + ": a preset texture has one to three axes");
   const Needs needs = NeedsOf(texture);
@@ -219,6 +221,8 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
   sheenSettings.sheenAlpha =
       model.sheenAlpha == PresetAlpha::kSquared ? SheenAlpha::kSquared : SheenAlpha::kLinear;
   // One task per row of x; rows of every slice in turn.
+  std::mutex progressMutex;
+  size_t rowsDone = 0;
   tbb::parallel_for(
       tbb::blocked_range<int>(0, height * depth), [&](const tbb::blocked_range<int> &rows) {
         for (int row = rows.begin(); row != rows.end(); ++row) {
@@ -302,6 +306,11 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
               table.errors[at] = std::fabs(channel.scale) * error + (stored - table.values[at]);
             }
           }
+        }
+        if (progress) {
+          std::lock_guard<std::mutex> lock(progressMutex);
+          rowsDone += rows.size();
+          progress(static_cast<double>(rowsDone) / (height * depth));
         }
       });
 

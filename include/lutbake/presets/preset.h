@@ -15,6 +15,7 @@
 // else knows an engine.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -151,8 +152,10 @@ std::string PresetNameList();
 // (N - 1), whose centres are i / (N - 1); a reversed axis as 1 - u), its
 // channels as the engine
 // reads them, named R, G, B, A. Bounds: the integrators' bound times
-// |scale|. Polls `cancellation` between rows.
+// |scale|. Polls `cancellation` between rows, and reports the fraction of
+// rows done to `progress` (from the worker threads, one call at a time).
 Table BakePresetTexture(const PresetTexture &texture, const std::string &presetName,
-                        const CancellationToken *cancellation = nullptr);
+                        const CancellationToken *cancellation = nullptr,
+                        const std::function<void(double fraction)> &progress = {});
 
 }  // namespace lutbake
