@@ -1,5 +1,6 @@
 // The text the command line prints about a bake (include/lutbake/api/bake.h):
 // kept in the library so that every front end words it the same way.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -58,13 +59,27 @@ std::string TableSummaryLine(const BakedTable &t) {
          Format("  (float32 as stored; integration %.1e)", t.integrationErrorMax);
 }
 
-std::string WrittenFilesText(const BakeResult &result) {
+std::string WrittenFilesText(const BakeResult &result, bool perFile) {
+  std::string text;
+  if (result.tolerance > 0.0) {
+    double worst = 0.0;
+    for (const BakedTable &t : result.tables) worst = std::max(worst, t.integrationErrorMax);
+    text += Format("tolerance %.3g reached on every texel: ", result.tolerance) +
+            Format("max integration bound %.2e, ", worst) +
+            Format("%.2f s in all (the files add the rounding of their storage)\n", result.seconds);
+  }
   std::vector<std::string> names;
   for (const WrittenFile &f : result.files)
     names.push_back(std::filesystem::path(f.path).filename().string());
-  std::string text = "wrote " + std::to_string(names.size()) +
-                     (names.size() == 1 ? " file" : " files") + " to " + result.outputDirectory +
-                     ": " + JoinNames(names) + "\n";
+  text += "wrote " + std::to_string(names.size()) + (names.size() == 1 ? " file" : " files") +
+          " to " + result.outputDirectory + (perFile ? ":\n" : ": " + JoinNames(names) + "\n");
+  for (size_t i = 0; perFile && i < names.size(); ++i) {
+    const WrittenFile &f = result.files[i];
+    text += "  " + Padded(names[i], 40) + Padded(f.format, 10);
+    if (f.errorMax > 0.0)
+      text += Format("error max %.2e", f.errorMax) + Format("  rms %.2e (as stored)", f.errorRms);
+    text += "\n";
+  }
   if (!result.removedFiles.empty())
     text += "removed the previous set's " + JoinNames(result.removedFiles) + "\n";
   if (!result.foreignFiles.empty())

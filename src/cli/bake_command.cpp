@@ -101,6 +101,9 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
   AddFileOptions(app, o);
   app.add_flag("--json", o.json, "Print the summary as one JSON object on stdout");
   app.add_flag("-q,--quiet", o.quiet, "No progress or summary lines (errors are still printed)");
+  app.add_flag("-v,--verbose", o.verbose,
+               "Also the equivalent command line first, and each file with its stated bounds")
+      ->excludes("--quiet");
   AddSceneOptions(app, o.scene);
   app.add_flag("--skip-unsupported", o.skipUnsupported,
                "With --scene: bake the plan although some materials use features lutbake does "
@@ -164,23 +167,13 @@ BakeRequest RequestOf(const BakeOptions &o, CLI::App &app) {
   return r;
 }
 
-void PrintResult(const BakeResult &result, bool json, bool quiet) {
+void PrintResult(const BakeResult &result, bool json, bool quiet, bool verbose) {
   if (result.planNeedsNothing) {
     std::cerr << "lutbake bake: the plan needs no tables; nothing written.\n";
     for (const std::string &line : result.nothingToBake) std::cerr << "  " << line << "\n";
     return;
   }
-  if (result.tolerance > 0.0 && !quiet) {
-    double worst = 0.0;
-    for (const BakedTable &t : result.tables) worst = std::max(worst, t.integrationErrorMax);
-    char line[200];
-    std::snprintf(line, sizeof line,
-                  "tolerance %.3g reached on every texel: max integration bound %.2e, %.2f s in "
-                  "all (the files add the rounding of their storage)\n",
-                  result.tolerance, worst, result.seconds);
-    std::cerr << line;
-  }
-  if (!quiet) std::cerr << WrittenFilesText(result);
+  if (!quiet) std::cerr << WrittenFilesText(result, verbose);
   if (json) std::cout << result.json << "\n";
 }
 
@@ -189,9 +182,11 @@ void PrintResult(const BakeResult &result, bool json, bool quiet) {
 int RunBake(const BakeOptions &o, const std::string &commandLine, CLI::App &app) {
   BakeRequest request = RequestOf(o, app);
   request.commandLine = commandLine;
+  if (o.verbose) std::cerr << "lutbake bake: " << EquivalentCommandLine(request) << "\n";
   const InterruptGuard interrupt;
   request.cancellation = &interrupt.token();
-  return RunLibraryCall("bake", o.outDir, [&] { PrintResult(Bake(request), o.json, o.quiet); });
+  return RunLibraryCall("bake", o.outDir,
+                        [&] { PrintResult(Bake(request), o.json, o.quiet, o.verbose); });
 }
 
 }  // namespace lutbake::cli

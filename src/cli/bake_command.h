@@ -30,7 +30,7 @@ struct BakeOptions {
   std::string headerType = "float";
   std::string binType = "float";
   std::string shaders;  // --shader glsl,hlsl,wgsl,msl: lutbake.<ext> beside the tables
-  bool json = false, quiet = false;
+  bool json = false, quiet = false, verbose = false;
   SceneOptions scene;  // --scene / --manifest: bake a plan
   bool skipUnsupported = false;
   std::string preset;       // --preset NAME: an engine's textures (preset_command.h)

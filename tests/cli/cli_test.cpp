@@ -10,8 +10,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "lutbake/formats/output_transaction.h"
 #include "lutbake/formats/atomic_output.h"
+#include "lutbake/formats/output_transaction.h"
 #include "support/cli_run.h"
 
 namespace {
@@ -117,6 +117,30 @@ TEST(Cli, ShortOutAndQuiet) {
   EXPECT_NE(bad.output.find("'nope'"), std::string::npos);
   fs::remove_all(out);
   fs::remove_all(quiet);
+}
+
+// -v: the equivalent command line first, then a line per file written with
+// its format and stated bound; -v with -q is refused.
+TEST(Cli, VerboseListsEveryFileWithItsBound) {
+  const fs::path out = Scratch("verbose");
+  const CommandResult r =
+      Lutbake("bake -v -o " + out.string() + " --tables E --size 4 --format exr,header");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output.rfind("lutbake bake: lutbake bake --out " + out.string() +
+                               " --tables E --format exr,header --size 4\n",
+                           0),
+            0u)
+      << r.output;
+  for (const char *file : {"E.exr", "E.h"}) {
+    const size_t at = r.output.find("\n  " + std::string(file) + " ");
+    ASSERT_NE(at, std::string::npos) << file << "\n" << r.output;
+    const std::string line = r.output.substr(at + 1, r.output.find('\n', at + 1) - at - 1);
+    EXPECT_NE(line.find("error max "), std::string::npos) << line;
+  }
+  const CommandResult both = Lutbake("bake -v -q -o " + out.string() + " --tables E --size 4");
+  EXPECT_EQ(both.status, 2) << both.output;
+  EXPECT_NE(both.output.find("--quiet excludes --verbose"), std::string::npos) << both.output;
+  fs::remove_all(out);
 }
 
 std::string ReadFile(const fs::path &p) {

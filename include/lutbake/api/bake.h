@@ -153,10 +153,11 @@ BakeResult Bake(const BakeRequest &request);
 // texture its channels and storage; a closed form what it replaced.
 std::string TableSummaryLine(const BakedTable &table);
 
-// The files a bake wrote, for the end of its output: "wrote 12 files to
-// out: E.exr, E.bin, ..." plus, on their own lines, the previous set's files
-// it removed and the foreign files it left alone.
-std::string WrittenFilesText(const BakeResult &result);
+// The end of a bake's output: with a tolerance, that it was reached; then
+// the files written, "wrote 12 files to out: E.exr, E.bin, ..." (`perFile`:
+// a line each, with its format and the bounds it states), plus, on their own
+// lines, the previous set's files removed and the foreign files left alone.
+std::string WrittenFilesText(const BakeResult &result, bool perFile = false);
 
 // The `lutbake bake` command line that asks for what `request` asks:
 // "lutbake bake --out DIR --tables E,dfg --format exr,header ...", options
