@@ -856,6 +856,7 @@ constexpr double kAveragePanelShare = 0.5;
 constexpr double kAverageNodeShare = 0.4;
 constexpr double kLoosestNodeTolerance = 1e-4;
 constexpr int kMaxAveragePanels = 400;
+constexpr double kHorizonAlpha = 0.04;
 
 struct FejerRule {
   std::array<double, kAverageFinest - 1> x{}, w{};
@@ -926,12 +927,17 @@ DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, Diel
   const double thetaE = leaving ? std::acos(eta) : 0.0;
   const double kinkScale = std::max(0.25 * alpha, std::sqrt(10.0 * tolerance));
   std::vector<double> edges = {0.0, halfPi};
-  const double lastKink = leaving ? std::max(thetaC, thetaE) : 0.0;
+  // The kink at mu = eta comes from the facets at the horizon, whose GGX
+  // density there is alpha^2 / pi: below alpha = kHorizonAlpha it is left to
+  // the rule (21% fewer facet weights on 20 points at r 1e-4 to 0.2, each
+  // within 0.5 of the summed bounds of the rule before at 1e-9).
+  const bool horizonKink = leaving && alpha >= kHorizonAlpha;
+  const double lastKink = leaving ? std::max(thetaC, horizonKink ? thetaE : 0.0) : 0.0;
   for (double d = std::max(alpha, 0.1 * std::sqrt(tolerance)); d < 0.4; d /= kAverageKeep)
     if (halfPi - d > lastKink) edges.push_back(halfPi - d);
   if (leaving) {
     edges.push_back(thetaC);
-    edges.push_back(thetaE);
+    if (horizonKink) edges.push_back(thetaE);
     // theta_c from the refracting side, down to the previous kink (or 0).
     const double belowC = thetaE < thetaC ? thetaE : 0.0;
     for (double d = kinkScale; d < 0.5 * (thetaC - belowC); d /= kAverageKeep)
@@ -947,10 +953,12 @@ DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, Diel
     // theta_eta from both sides.
     const double belowE = thetaC < thetaE ? thetaC : 0.0;
     const double aboveE = thetaC > thetaE ? thetaC : halfPi;
-    for (double d = kinkScale; d < 0.5 * (thetaE - belowE); d /= kAverageKeep)
-      edges.push_back(thetaE - d);
-    for (double d = kinkScale; d < 0.5 * (aboveE - thetaE); d /= kAverageKeep)
-      edges.push_back(thetaE + d);
+    if (horizonKink) {
+      for (double d = kinkScale; d < 0.5 * (thetaE - belowE); d /= kAverageKeep)
+        edges.push_back(thetaE - d);
+      for (double d = kinkScale; d < 0.5 * (aboveE - thetaE); d /= kAverageKeep)
+        edges.push_back(thetaE + d);
+    }
   }
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
@@ -959,8 +967,8 @@ DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, Diel
     const double a = edges[k], b = edges[k + 1];
     if (!(b > a)) continue;
     int square = 0;
-    if (b == halfPi || (leaving && (b == thetaE || b == thetaC))) square = -1;
-    if (leaving && a == thetaE) square = 1;
+    if (b == halfPi || (leaving && (b == thetaC || (horizonKink && b == thetaE)))) square = -1;
+    if (horizonKink && a == thetaE) square = 1;
     panels.emplace_back(a, b, square);
   }
   const std::array<FejerRule, kAverageLevels> &rules = FejerRules();
