@@ -139,7 +139,8 @@ DielectricIntegral IntegrateDielectricAlbedo(NdfKind ndf, SmithForm smith, Diele
 // E_avg = int_0^(pi/2) E(cos(theta)) sin(2 theta) dtheta, a rule in theta =
 // acos(mu) (E is even, so analytic, in theta at the normal, where in mu it is
 // not). The panels end on E's kinks, for eta < 1 theta_c = asin(eta) (mu =
-// c_crit) and theta_eta = acos(eta) (mu = eta), and are graded toward them
+// c_crit) and, for alpha >= 0.04, theta_eta = acos(eta) (mu = eta; below, the
+// facets at the horizon that make it weigh alpha^2 / pi), graded toward them
 // (ratio 4, from max(alpha / 4, sqrt(10 tolerance))) and toward mu = 0 (from
 // max(alpha, 0.1 sqrt(tolerance))), the panels that touch them mapped
 // quadratically (the .cpp says why). Each panel takes Fejer's second rule,
@@ -150,13 +151,15 @@ DielectricIntegral IntegrateDielectricAlbedo(NdfKind ndf, SmithForm smith, Diele
 // IntegrateDielectricAlbedo at the tolerance its weight allows (0.4
 // tolerance / (panels x nodes x its weight), from 0.4 tolerance to 1e-4), with
 // its own bound. Bound: 2 sum_p |V_p,k - V_p,k-1| + the nodes' bounds,
-// weighted as the rule weights them, + 1e-10 (an estimate, validated: on
-// 17 etas from 1/128 to 128 (1 -+ 1e-6 among them) x 8 roughnesses, GGX
-// correlated, both lobes, against the rule this one replaced (Gauss panels in
-// mu, graded, at tolerance 1e-9): every difference within 0.41 of the sum of
-// both bounds). Measured (tolerance 1e-8, facet weights on that grid): glass
-// 3.5e8 against 9.8e8 for the rule before at 1e-9 (see docs/speed.md for the
-// bake times).
+// weighted as the rule weights them, + 1e-10 (an estimate, validated
+// against the rule this one replaced, Gauss panels in mu at tolerance 1e-9:
+// on 17 etas from 1/128 to 128 (1 -+ 1e-6 among them) x 8 roughnesses, GGX
+// correlated, both lobes, every difference within 0.59 of the sum of both
+// bounds; Beckmann glass, GGX separable glass and Beckmann separable
+// reflection on 4 roughnesses within 0.54, measured before mu = eta was left
+// out below alpha = 0.04). Facet weights at tolerance 1e-8 on that grid: glass 3.0e8
+// against 6.1e8 for the rule before, reflection 2.6e8 against 5.0e8 (bake
+// times: docs/speed.md).
 DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, DielectricLobes lobes,
                                               double alpha, double eta, double tolerance);
 
