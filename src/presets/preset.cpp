@@ -14,6 +14,7 @@
 #include "lutbake/formats/writer.h"
 #include "lutbake/integrators/albedo_quadrature.h"
 #include "lutbake/integrators/sheen_quadrature.h"
+#include "lutbake/models/zeltner_sheen_ltc.h"
 #include "lutbake/tables/table_definition.h"
 
 namespace lutbake {
@@ -74,7 +75,7 @@ constexpr double kSheenBTolerance = 1e-7;
 
 struct Needs {
   bool splitSum = false, sheen = false, sheenB = false, f82 = false, average = false;
-  bool disney = false, glass = false, glassAverage = false;
+  bool disney = false, glass = false, glassAverage = false, zeltner = false;
 };
 
 Needs NeedsOf(const PresetTexture &texture) {
@@ -96,6 +97,8 @@ Needs NeedsOf(const PresetTexture &texture) {
       needs.glass = true;
     else if (c.meaning == "glass_Eavg")
       needs.glassAverage = true;
+    else if (c.meaning == "zeltner_a" || c.meaning == "zeltner_b" || c.meaning == "zeltner_R")
+      needs.zeltner = true;
     else if (c.meaning != "one" && c.meaning != "zero" && c.meaning != "fabric_lambert")
       throw std::invalid_argument("preset channel '" + c.meaning + "' is not known");
   }
@@ -289,6 +292,12 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
                 value = 1.0 - 0.5 * alpha;
               } else if (channel.meaning == "one") {
                 value = 1.0;
+              } else if (needs.zeltner && channel.meaning.rfind("zeltner_", 0) == 0) {
+                // The published table, at alpha = the roughness axis.
+                const std::array<double, 3> ltc = ZeltnerSheenLtc(mu, roughness);
+                value = ltc[channel.meaning == "zeltner_a"   ? 0
+                            : channel.meaning == "zeltner_b" ? 1
+                                                             : 2];
               } else {
                 for (const auto &[meaning, integral] : kSingle)
                   if (channel.meaning == meaning) {
@@ -298,8 +307,9 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
               }
               const size_t at = table.index(ix, iy, iz, c);
               const double stored = channel.scale * value + channel.offset;
-              table.values[at] = std::min(stored, channel.clampMax);
-              table.errors[at] = std::fabs(channel.scale) * error + (stored - table.values[at]);
+              table.values[at] = std::clamp(stored, channel.clampMin, channel.clampMax);
+              table.errors[at] =
+                  std::fabs(channel.scale) * error + std::abs(stored - table.values[at]);
             }
           }
         }

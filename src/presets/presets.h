@@ -17,6 +17,7 @@ const Preset &GltfSampleRendererPreset();
 const Preset &LearnOpenGlPreset();
 const Preset &EeveePreset();
 const Preset &CyclesPreset();
+const Preset &BabylonPreset();
 
 // Axis helpers for the definitions: an axis of `count` texels over the
 // quantity "mu" or "roughness".

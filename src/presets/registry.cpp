@@ -18,6 +18,7 @@ const std::vector<const Preset *> &AllPresets() {
       &LearnOpenGlPreset(),
       &EeveePreset(),
       &CyclesPreset(),
+      &BabylonPreset(),
   };
   return presets;
 }

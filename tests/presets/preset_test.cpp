@@ -59,7 +59,7 @@ const PresetFileCheck *FileCheck(const PresetCheck &check, const std::string &fi
 
 TEST(Presets, EveryEngineOfTheIssueIsListed) {
   for (const char *name : {"filament", "unreal", "unity-hdrp", "godot", "threejs",
-                           "gltf-sample-renderer", "learnopengl", "eevee", "cycles"})
+                           "gltf-sample-renderer", "learnopengl", "eevee", "cycles", "babylon"})
     EXPECT_NE(FindPreset(name), nullptr) << name;
   // The listing (`lutbake presets --json`) names every preset.
   const nlohmann::json listed = nlohmann::json::parse(PresetListJson());

@@ -109,14 +109,22 @@ struct PresetModel {
 //   "disney_diffuse"  Burley's diffuse albedo as Unity HDRP renormalises it:
 //               table burley_E / 1.03571 (preset.cpp, DisneyDiffuseAlbedo), at
 //               perceptual roughness
+//   "zeltner_a", "zeltner_b", "zeltner_R"  Zeltner et al.'s multiple-
+//               scattering sheen (OpenPBR's fuzz): its LTC entries a, b and
+//               reflectance R from the authors' published table
+//               (models/zeltner_sheen_ltc.h), at (mu, alpha = the roughness
+//               axis itself), bilinear between its entries as the authors'
+//               renderer reads it; not integrated by lutbake, so with no
+//               bound of their own (a texel's bound is its storage's only)
 //   "one", "zero"  constants (a channel the engine does not read)
-// A format that holds only [0, 1] (PNG) takes min(stored, clampMax); the
+// A format that holds only [0, 1] (PNG) takes min(stored, clampMax), and
+// one that holds no negative value (RGBD) max(stored, clampMin); the
 // texel's bound then adds what the clamp moved it by, so that it still
 // covers the value as stored.
 struct PresetChannel {
   std::string meaning;
   double scale = 1.0, offset = 0.0;
-  double clampMax = 1e300;
+  double clampMin = -1e300, clampMax = 1e300;
 };
 
 // One texture (or embedded array) of a preset.
