@@ -25,6 +25,7 @@ const char *ToString(PresetMapping mapping) {
     case PresetMapping::kSquare: return "u^2";
     case PresetMapping::kOneMinusSquare: return "1 - u^2";
     case PresetMapping::kIorOfF0Root4: return "(1 + u^2) / (1 - u^2)";
+    case PresetMapping::kLinearRange: return "lowest + u (highest - lowest)";
   }
   return "?";
 }
@@ -62,6 +63,7 @@ double PresetAxis::Quantity(int i) const {
   // without cancellation. u = 1 gives +infinity, which the clamp bounds.
   if (mapping == PresetMapping::kIorOfF0Root4)
     q = u < 1.0 ? (1.0 + u * u) / ((1.0 - u) * (1.0 + u)) : std::numeric_limits<double>::infinity();
+  if (mapping == PresetMapping::kLinearRange) q = lowest + u * (highest - lowest);
   return std::clamp(q, lowest, highest);
 }
 
@@ -76,6 +78,7 @@ constexpr double kSheenBTolerance = 1e-7;
 struct Needs {
   bool splitSum = false, sheen = false, sheenB = false, f82 = false, average = false;
   bool disney = false, glass = false, glassAverage = false, zeltner = false;
+  bool spec = false, specAverage = false;  // the dielectric's reflection alone
 };
 
 Needs NeedsOf(const PresetTexture &texture) {
@@ -97,6 +100,10 @@ Needs NeedsOf(const PresetTexture &texture) {
       needs.glass = true;
     else if (c.meaning == "glass_Eavg")
       needs.glassAverage = true;
+    else if (c.meaning == "spec_E")
+      needs.spec = true;
+    else if (c.meaning == "spec_Eavg")
+      needs.specAverage = true;
     else if (c.meaning == "zeltner_a" || c.meaning == "zeltner_b" || c.meaning == "zeltner_R")
       needs.zeltner = true;
     else if (c.meaning != "one" && c.meaning != "zero" && c.meaning != "fabric_lambert")
@@ -173,13 +180,14 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
     if (quantity == "roughness") roughnessAxis = static_cast<int>(a);
     if (quantity == "eta" || quantity == "1/eta") etaAxis = static_cast<int>(a);
   }
-  const bool averaged = needs.average || needs.glassAverage;
+  const bool averaged = needs.average || needs.glassAverage || needs.specAverage;
+  const bool dielectric = needs.glass || needs.glassAverage || needs.spec || needs.specAverage;
   if (roughnessAxis < 0 || (muAxis < 0 && !averaged))
     throw std::invalid_argument(texture.file +
                                 ": a preset texture needs its mu and roughness axes");
-  if ((needs.glass || needs.glassAverage) != (etaAxis >= 0))
-    throw std::invalid_argument(texture.file +
-                                ": the glass channels, and only they, take an eta axis");
+  if (dielectric != (etaAxis >= 0))
+    throw std::invalid_argument(
+        texture.file + ": the dielectric (glass, spec) channels, and only they, take an eta axis");
 
   Table table;
   table.name = texture.file.substr(0, texture.file.find('.'));
@@ -242,7 +250,8 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
               eta = ea.quantity == "1/eta" ? 1.0 / q : q;
             }
             const double alpha = AlphaOf(model.alpha, roughness, model.alphaMin);
-            PointValue split, sheen, sheenB, f82, average, disney, glass, glassAverage;
+            PointValue split, sheen, sheenB, f82, average, disney, glass, glassAverage, spec,
+                specAverage;
             if (needs.sheenB) {
               const double sheenAlpha =
                   model.sheenAlpha == PresetAlpha::kSquared ? roughness * roughness : roughness;
@@ -271,12 +280,22 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
                       TableNamed("glass_Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), eta);
               }
             }
+            if (needs.spec)
+              spec = TableNamed("spec_E").Evaluate3D(microfacetSettings, mu, std::sqrt(alpha), eta);
+            if (needs.specAverage)
+              specAverage =
+                  TableNamed("spec_Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), eta);
             // The single-valued meanings and the integral each reads.
             const std::pair<const char *, const PointValue *> kSingle[] = {
-                {"sheen_E", &sheen},          {"f82", &f82},
-                {"Eavg", &average},           {"sheen_B", &sheenB},
-                {"disney_diffuse", &disney},  {"glass_E", &glass},
-                {"glass_Eavg", &glassAverage}};
+                {"sheen_E", &sheen},
+                {"f82", &f82},
+                {"Eavg", &average},
+                {"sheen_B", &sheenB},
+                {"disney_diffuse", &disney},
+                {"glass_E", &glass},
+                {"glass_Eavg", &glassAverage},
+                {"spec_E", &spec},
+                {"spec_Eavg", &specAverage}};
             for (int c = 0; c < table.channels; ++c) {
               const PresetChannel &channel = texture.channels[static_cast<size_t>(c)];
               double value = 0.0, error = 0.0;

@@ -18,6 +18,7 @@ const Preset &LearnOpenGlPreset();
 const Preset &EeveePreset();
 const Preset &CyclesPreset();
 const Preset &BabylonPreset();
+const Preset &OsprayPreset();
 
 // Axis helpers for the definitions: an axis of `count` texels over the
 // quantity "mu" or "roughness".

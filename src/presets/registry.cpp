@@ -19,6 +19,7 @@ const std::vector<const Preset *> &AllPresets() {
       &EeveePreset(),
       &CyclesPreset(),
       &BabylonPreset(),
+      &OsprayPreset(),
   };
   return presets;
 }

@@ -179,7 +179,7 @@ TEST(Determinism, TextureAndSourceFormatsAndShaders) {
 // minutes).
 TEST(Determinism, EnginePresets) {
   for (const char *preset :
-       {"unreal", "godot", "cycles", "eevee", "threejs", "filament-mobile", "babylon"}) {
+       {"unreal", "godot", "cycles", "eevee", "threejs", "filament-mobile", "babylon", "ospray"}) {
     std::string options = std::string("--preset ") + preset;
     if (options == "--preset cycles")
       options += " --files table_ggx_E.h,table_ggx_Eavg.h,table_ggx_glass_E.h";
@@ -188,6 +188,8 @@ TEST(Determinism, EnginePresets) {
       options +=
           " --files openPBREnvironmentBRDFTexture.png,environmentFuzzBRDFTexture.png,"
           "openPBREnvironmentBRDFTexture.dds";
+    if (options == "--preset ospray")
+      options += " --files MicrofacetAlbedoTable_dir.ih,MicrofacetAlbedoTable_avg.ih";
     EXPECT_GE(ExpectSameFilesForEveryThreadCount(std::string("preset_") + preset, options), 2)
         << preset;
   }

@@ -651,6 +651,130 @@ def sanity_split_sum(name, A, B, nv, rough, la, lb):
 
 
 # ---------------------------------------------------------------------------------------------
+# ---------------------------------------------------------------------------------------------
+# OSPRay: MicrofacetAlbedoTables.ispc, built at start-up on the CPU in float (ISPC): 32 x 32
+# stratified samples of the GGX visible normals per texel (Heitz 2017, sampleVisible), weight
+# G2 / G1 (height-correlated), min(mean, 1); averages a 1025-point trapezoid over the linearly
+# interpolated directional table, min(., 1).
+# ---------------------------------------------------------------------------------------------
+OSPRAY_SRC = ("RenderKit/ospray modules/cpu/render/bsdfs/MicrofacetAlbedoTables.ispc (@01beea16), "
+              "MicrofacetAlbedo.ih, GGXDistribution.ih (sampleVisible, evalG1, evalG2), Fresnel.ih, "
+              "Optics.ih, MicrofacetDistribution.ih (roughnessToAlpha: max(r^2, 0.001)) (@078c589a)")
+
+
+def ospray_lambda(alpha, x, y, z):
+    """GGXDistribution.ih evalLambda (isotropic alpha), float32."""
+    inv_a2 = (np.square(x * alpha) + np.square(y * alpha)) / np.square(z)
+    return f32(0.5) * (f32(-1.0) + np.sqrt(f32(1.0) + inv_a2))
+
+
+def ospray_samples(cos_o, alpha):
+    """For each view cosine (array), the 32 x 32 stratified visible normals: wo, wh (float32)."""
+    n = 32
+    u = np.minimum((np.arange(n, dtype=np.float32) + f32(0.5)) / f32(n), f32(1.0 - 1e-6))
+    sx, sy = np.meshgrid(u, u, indexing="ij")                # s = ((i + 0.5) / n, (j + 0.5) / n)
+    sx, sy = sx.ravel()[None, :], sy.ravel()[None, :]
+    cos_o = np.maximum(np.asarray(cos_o, np.float32), f32(1e-6))[:, None]
+    wo = (np.sqrt(np.maximum(f32(0.0), f32(1.0) - cos_o * cos_o)), np.zeros_like(cos_o), cos_o)
+    vx, vy, vz = normalize3(alpha * wo[0], alpha * wo[1], wo[2])
+    # T1 = normalize(cross(V, z)) = normalize(V.y, -V.x, 0) unless V is (nearly) the normal
+    tl = np.sqrt(vy * vy + vx * vx)
+    pole = vz >= f32(0.9999)
+    t1x = np.where(pole, f32(1.0), vy / np.where(pole, f32(1.0), tl))
+    t1y = np.where(pole, f32(0.0), -vx / np.where(pole, f32(1.0), tl))
+    t1z = np.zeros_like(vz)
+    t2x, t2y, t2z = t1y * vz - t1z * vy, t1z * vx - t1x * vz, t1x * vy - t1y * vx
+    a = f32(1.0) / (f32(1.0) + vz)
+    r = np.sqrt(sx)
+    pi = f32(math.pi)
+    lower = sy < a
+    phi = np.where(lower, sy / a * pi, pi + (sy - a) / (f32(1.0) - a) * pi)
+    p1 = r * np.cos(phi)
+    p2 = r * np.sin(phi) * np.where(lower, f32(1.0), vz)
+    p3 = np.sqrt(np.maximum(f32(0.0), f32(1.0) - p1 * p1 - p2 * p2))
+    hx, hy, hz = p1 * t1x + p2 * t2x + p3 * vx, p1 * t1y + p2 * t2y + p3 * vy, p1 * t1z + p2 * t2z + p3 * vz
+    wh = normalize3(alpha * hx, alpha * hy, np.maximum(f32(0.0), hz))
+    return wo, wh
+
+
+def ospray_albedo(cos_o, roughness, eta=None, lobes="reflection"):
+    """MicrofacetAlbedo_integrate (eta None), MicrofacetDielectricAlbedo_integrate (lobes 'both')
+    or MicrofacetDielectricReflectionAlbedo_integrate (lobes 'reflection' with eta)."""
+    alpha = np.maximum(np.square(f32(roughness)), f32(0.001))
+    wo, wh = ospray_samples(cos_o, alpha)
+    c_oh = wo[0] * wh[0] + wo[1] * wh[1] + wo[2] * wh[2]
+    lam_o = ospray_lambda(alpha, *wo)
+    g1 = np.where(wo[2] * c_oh > 0, f32(1.0) / (f32(1.0) + lam_o), f32(0.0))
+    rcp_g1 = np.where(g1 > 0, f32(1.0) / np.where(g1 > 0, g1, f32(1.0)), f32(0.0))   # rcp_safe
+
+    def g2(wi, c_ih):
+        ok = (wo[2] * c_oh > 0) & (wi[2] * c_ih > 0)
+        return np.where(ok, f32(1.0) / (f32(1.0) + lam_o + ospray_lambda(alpha, *wi)), f32(0.0))
+
+    wr = tuple(f32(2.0) * c_oh * h - o for h, o in zip(wh, wo))          # reflect(wo, wh)
+    reflection = np.where(wr[2] > 0, g2(wr, c_oh) * rcp_g1, f32(0.0))
+    if eta is None:
+        weight = reflection
+    else:
+        eta = f32(eta)
+        sqr_cos_t = f32(1.0) - eta * eta * (f32(1.0) - c_oh * c_oh)
+        tir = sqr_cos_t < 0
+        cos_t = np.where(tir, f32(0.0), np.sqrt(np.maximum(sqr_cos_t, f32(0.0))))
+        rper = (eta * c_oh - cos_t) / (eta * c_oh + cos_t)
+        rpar = (c_oh - eta * cos_t) / (c_oh + eta * cos_t)
+        fresnel = np.where(tir, f32(1.0), f32(0.5) * (rpar * rpar + rper * rper))
+        weight = fresnel * reflection
+        if lobes == "both":
+            wt = tuple(eta * (c_oh * h - o) - cos_t * h for h, o in zip(wh, wo))  # refract
+            c_ih = wt[0] * wh[0] + wt[1] * wh[1] + wt[2] * wh[2]
+            weight = weight + np.where(wt[2] < 0, (f32(1.0) - fresnel) * g2(wt, c_ih) * rcp_g1, f32(0.0))
+    return np.minimum(weight.astype(np.float32).sum(axis=1, dtype=np.float32) / f32(1024), f32(1.0))
+
+
+def ospray_average(directional):
+    """MicrofacetAlbedoTable_integrateAvg: trapezoid over 1025 cosines of the interpolated table."""
+    size = len(directional)
+    cos_o = np.arange(1025, dtype=np.float32) / f32(1024)
+    x = cos_o * f32(size - 1)
+    i = np.minimum(np.floor(x).astype(int), size - 2)
+    value = directional[i] * (f32(1.0) - (x - i)) + directional[i + 1] * (x - i)
+    weight = np.where((np.arange(1025) == 0) | (np.arange(1025) == 1024), f32(0.5), f32(1.0))
+    return min(2.0 * float(np.sum(value * cos_o * weight, dtype=np.float32)) / 1024, 1.0)
+
+
+def ospray_ggx_table():
+    cos_o = np.arange(32, dtype=np.float32) / f32(31)
+    header = [OSPRAY_SRC, "MicrofacetAlbedoTable_dir[j * 32 + i]: i = cosThetaO = i / 31, j = roughness = j / 31; "
+              "avg: the trapezoid average of row j"]
+    rows, e = [], np.zeros((32, 32))
+    for j in range(32):
+        e[j] = ospray_albedo(cos_o, np.float32(j) / f32(31))
+        avg = ospray_average(e[j].astype(np.float32))
+        for i in range(32):
+            rows.append([i, j, "%.9g" % e[j, i], "%.9g" % avg])
+    checks = ["E at the smoothest row: %.6f .. %.6f (1 but for the clamp alpha >= 0.001)" % (e[0].min(), e[0].max())]
+    return header, ["i", "j", "E", "Eavg"], rows, checks
+
+
+def ospray_dielectric_table(kind):
+    """kind 'glass' (eta in [1/3, 1], both lobes) or 'reflection' (the reflection alone)."""
+    cos_o = np.arange(16, dtype=np.float32) / f32(15)
+    lo, hi = f32(1.0) / f32(3.0), f32(1.0)
+    header = [OSPRAY_SRC, "Microfacet%sAlbedoTable_dir[(k * 16 + j) * 16 + i]: i = cosThetaO = i / 15, "
+              "j: eta = lerp(j / 15, 1/3, 1), k = roughness = k / 15; avg: trapezoid average of each (j, k)"
+              % ("Dielectric" if kind == "glass" else "DielectricReflection")]
+    rows = []
+    for k in range(16):
+        for j in range(16):
+            t = f32(j) / f32(15)
+            eta = (f32(1.0) - t) * lo + t * hi
+            e = ospray_albedo(cos_o, np.float32(k) / f32(15), eta, "both" if kind == "glass" else "reflection")
+            avg = ospray_average(e.astype(np.float32))
+            for i in range(16):
+                rows.append([i, j, k, "%.9g" % e[i], "%.9g" % avg])
+    return header, ["i", "j", "k", "E", "Eavg"], rows, []
+
+
 ENGINES = {
     "unreal": ("unreal_preintegrated_gf.csv", unreal_table),
     "godot": ("godot_dfg.csv", lambda: godot_table("master")),
@@ -659,6 +783,9 @@ ENGINES = {
     "hdrp_charlie": ("hdrp_fgd_charlie.csv", hdrp_charlie_table),
     "gltf_ggx": ("gltf_lut_ggx.csv", lambda: gltf_ggx_table(GLTF_STRIDE)),
     "gltf_charlie": ("gltf_lut_charlie.csv", lambda: gltf_charlie_table(GLTF_STRIDE)),
+    "ospray_ggx": ("ospray_ggx.csv", ospray_ggx_table),
+    "ospray_glass": ("ospray_dielectric.csv", lambda: ospray_dielectric_table("glass")),
+    "ospray_reflection": ("ospray_dielectric_reflection.csv", lambda: ospray_dielectric_table("reflection")),
 }
 DEFAULT = ["unreal", "godot", "hdrp_ggx", "hdrp_charlie", "gltf_ggx", "gltf_charlie"]
 

@@ -34,7 +34,9 @@ namespace lutbake {
 //                   reflectance F0 is u^4, u = sqrt(|(ior - 1) / (ior + 1)|)
 //                   (Cycles' IOR axis); u = 1 is infinite, so such an axis
 //                   clamps q below.
-enum class PresetMapping { kLinear, kSquare, kOneMinusSquare, kIorOfF0Root4 };
+//   kLinearRange    q = lowest + u (highest - lowest): an axis that runs
+//                   linearly over [lowest, highest] (OSPRay's eta axes).
+enum class PresetMapping { kLinear, kSquare, kOneMinusSquare, kIorOfF0Root4, kLinearRange };
 // Where texel i of N lies in u:
 //   kCentres  u = (i + 0.5) / N   (sampled at uv by a linear filter)
 //   kEdges    u = i / (N - 1)     (N >= 2: a half-texel remap, a CPU lookup)
@@ -106,6 +108,8 @@ struct PresetModel {
 //   "glass_E"   rough glass's directional albedo, reflection + transmission
 //               (table glass_E) at the texel's eta
 //   "glass_Eavg"  its cosine-weighted average over mu (table glass_Eavg)
+//   "spec_E", "spec_Eavg"  the same of the reflection alone (tables spec_E,
+//               spec_Eavg)
 //   "disney_diffuse"  Burley's diffuse albedo as Unity HDRP renormalises it:
 //               table burley_E / 1.03571 (preset.cpp, DisneyDiffuseAlbedo), at
 //               perceptual roughness
