@@ -262,7 +262,12 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
             }
             if (needs.disney) disney = DisneyDiffuseAlbedo(mu, roughness);
             if (needs.splitSum) split = SplitSum(model, mu, alpha);
-            if (needs.sheen) sheen = TableNamed("sheen_E").Evaluate(sheenSettings, mu, roughness);
+            // The sheen's roughness with the engine's clamp of its alpha.
+            const double sheenRoughness = model.sheenAlpha == PresetAlpha::kSquared
+                                              ? std::max(roughness, std::sqrt(model.sheenAlphaMin))
+                                              : std::max(roughness, model.sheenAlphaMin);
+            if (needs.sheen)
+              sheen = TableNamed("sheen_E").Evaluate(sheenSettings, mu, sheenRoughness);
             if (needs.f82)
               f82 = TableNamed("f82").Evaluate(microfacetSettings, mu, std::sqrt(alpha));
             if (needs.average)

@@ -19,6 +19,7 @@ const Preset &EeveePreset();
 const Preset &CyclesPreset();
 const Preset &BabylonPreset();
 const Preset &OsprayPreset();
+const Preset &MaterialxPreset();
 
 // Axis helpers for the definitions: an axis of `count` texels over the
 // quantity "mu" or "roughness".

@@ -20,6 +20,7 @@ const std::vector<const Preset *> &AllPresets() {
       &CyclesPreset(),
       &BabylonPreset(),
       &OsprayPreset(),
+      &MaterialxPreset(),
   };
   return presets;
 }

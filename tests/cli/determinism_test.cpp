@@ -178,8 +178,8 @@ TEST(Determinism, TextureAndSourceFormatsAndShaders) {
 // Cycles, the 2D tables and the 3D glass_E (its glass averages take
 // minutes).
 TEST(Determinism, EnginePresets) {
-  for (const char *preset :
-       {"unreal", "godot", "cycles", "eevee", "threejs", "filament-mobile", "babylon", "ospray"}) {
+  for (const char *preset : {"unreal", "godot", "cycles", "eevee", "threejs", "filament-mobile",
+                             "babylon", "ospray", "materialx"}) {
     std::string options = std::string("--preset ") + preset;
     if (options == "--preset cycles")
       options += " --files table_ggx_E.h,table_ggx_Eavg.h,table_ggx_glass_E.h";

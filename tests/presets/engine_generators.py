@@ -35,6 +35,12 @@ engines (default: unreal godot hdrp_ggx hdrp_charlie gltf_ggx gltf_charlie):
       Common.hlsl (helpers).
   gltf_ggx       -> gltf_lut_ggx.csv
   gltf_charlie   -> gltf_lut_charlie.csv
+  ospray_ggx, ospray_glass, ospray_reflection -> ospray_ggx.csv, ospray_dielectric.csv,
+                    ospray_dielectric_reflection.csv (not in the default set)
+      OSPRay MicrofacetAlbedoTables.ispc: GGX E 32 x 32 and its averages, the dielectric (eta in
+      [1/3, 1]) and its reflection alone 16^3, 1024 stratified samples, float
+  materialx      -> materialx_albedo_table.csv (not in the default set)
+      MaterialX mx_generate_dir_albedo_table: 128 x 128, 64 spherical Fibonacci samples, float
   gltf           -> both glTF tables
       KhronosGroup glTF Sample Renderer lut_ggx (R = A, G = B) and lut_charlie (B = sheen albedo), 1024 x 1024, 512 samples,
       RGBA16F, rendered at start-up: source/shaders/ibl_filtering.frag (@d3d2f605306756e76396073d3aef81b71012c16d, LUT()),
@@ -775,6 +781,71 @@ def ospray_dielectric_table(kind):
     return header, ["i", "j", "k", "E", "Eavg"], rows, []
 
 
+# ---------------------------------------------------------------------------------------------
+# MaterialX: mx_generate_dir_albedo_table (GPU, float), 64 spherical Fibonacci samples per
+# texel: GGX A, B by visible-normal sampling (a spherical cap, Dupuy and Benyoub 2023), weights
+# G2 (height-correlated) / G1; the Imageworks sheen by uniform hemisphere samples. 128 x 128 float.
+# ---------------------------------------------------------------------------------------------
+MATERIALX_SRC = ("AcademySoftwareFoundation/MaterialX@4177b2cb libraries/pbrlib/genglsl/lib/"
+                 "mx_generate_albedo_table.glsl, mx_microfacet.glsl (mx_spherical_fibonacci), "
+                 "mx_microfacet_specular.glsl (mx_ggx_dir_albedo_monte_carlo, mx_ggx_importance_sample_VNDF, "
+                 "mx_ggx_smith_G1/G2), mx_microfacet_sheen.glsl (mx_imageworks_sheen_dir_albedo_monte_carlo); "
+                 "source/MaterialXView/Viewer.cpp ALBEDO_TABLE_SIZE 128")
+
+
+def materialx_table(size=128):
+    eps = f32(1e-8)
+    count = 64
+    k = np.arange(count, dtype=np.float32)
+    xi_x = (k + f32(0.5)) / f32(count)
+    xi_y = np.mod((k + f32(1.0)) * f32(1.6180339887498948), f32(1.0))
+    u = (np.arange(size, dtype=np.float32) + f32(0.5)) / f32(size)
+    nv = np.clip(u, eps, f32(1.0))[None, :, None]                 # [1, x, sample]
+    alpha = u[:, None, None]                                       # [y, 1, 1]
+    vx, vz = np.sqrt(f32(1.0) - nv * nv), nv
+    # mx_ggx_importance_sample_VNDF: a spherical cap about the stretched view.
+    sx, sy, sz = normalize3(vx * alpha, np.zeros_like(vx * alpha), vz + f32(0.0) * alpha)
+    phi = f32(2.0 * math.pi) * xi_x
+    z = (f32(1.0) - xi_y) * (f32(1.0) + sz) - sz
+    sin_t = np.sqrt(np.clip(f32(1.0) - z * z, f32(0.0), f32(1.0)))
+    hx, hy, hz = normalize3((sin_t * np.cos(phi) + sx) * alpha, (sin_t * np.sin(phi) + sy) * alpha,
+                            np.maximum(z + sz, f32(0.0)))
+    vh_raw = vx * hx + vz * hz
+    lz = f32(2.0) * vh_raw * hz - vz                               # L = -reflect(V, H)
+    nl = np.clip(lz, eps, f32(1.0))
+    vh = np.clip(vh_raw, eps, f32(1.0))
+    fc = np.clip(f32(1.0) - vh, f32(0.0), f32(1.0)) ** 5
+    a2 = alpha * alpha
+    lam_l = np.sqrt(a2 + (f32(1.0) - a2) * nl * nl)
+    lam_v = np.sqrt(a2 + (f32(1.0) - a2) * nv * nv)
+    g2 = f32(2.0) * nl * nv / (lam_l * nv + lam_v * nl)
+    tan2 = (f32(1.0) - nv * nv) / (nv * nv)
+    g1 = f32(2.0) / (f32(1.0) + np.sqrt(f32(1.0) + a2 * tan2))
+    a_sum = (g2 * (f32(1.0) - fc)).sum(axis=2, dtype=np.float32)
+    b_sum = (g2 * fc).sum(axis=2, dtype=np.float32)
+    scale = g1[..., 0] * f32(count)
+    table_a, table_b = a_sum / scale, b_sum / scale
+    # Imageworks sheen: uniform hemisphere, Charlie D with r = max(roughness, 0.005), Ashikhmin V.
+    cos_l = f32(1.0) - xi_y
+    sin_l = np.sqrt(f32(1.0) - cos_l * cos_l)
+    lx, ly = np.cos(phi) * sin_l, np.sin(phi) * sin_l
+    hx, hy, hz = normalize3(lx + vx, ly + f32(0.0) * vx, cos_l + vz)
+    nl = np.clip(cos_l + f32(0.0) * vz, eps, f32(1.0))
+    nh = np.clip(hz, eps, f32(1.0))
+    inv_r = f32(1.0) / np.maximum(alpha, f32(0.005))
+    d = (f32(2.0) + inv_r) * np.power(f32(1.0) - nh * nh, inv_r * f32(0.5)) / f32(2.0 * math.pi)
+    brdf = d / (f32(4.0) * (nl + nv - nl * nv))
+    sheen = (brdf * nl / f32(0.5 / math.pi)).sum(axis=2, dtype=np.float32) / f32(count)
+    header = [MATERIALX_SRC, "texel (i, j): NdotV = (i + 0.5) / 128, alpha (and the sheen's roughness) = (j + 0.5) / 128; "
+              "R = A, G = B, B = Imageworks sheen albedo, float"]
+    rows = []
+    for j in range(size):
+        for i in range(size):
+            rows.append([i, j, "%.9g" % table_a[j, i], "%.9g" % table_b[j, i], "%.9g" % sheen[j, i]])
+    checks = ["A + B at alpha ~ 0, NdotV ~ 1: %.6f" % (table_a[0, -1] + table_b[0, -1])]
+    return header, ["i", "j", "A", "B", "sheen"], rows, checks
+
+
 ENGINES = {
     "unreal": ("unreal_preintegrated_gf.csv", unreal_table),
     "godot": ("godot_dfg.csv", lambda: godot_table("master")),
@@ -784,6 +855,7 @@ ENGINES = {
     "gltf_ggx": ("gltf_lut_ggx.csv", lambda: gltf_ggx_table(GLTF_STRIDE)),
     "gltf_charlie": ("gltf_lut_charlie.csv", lambda: gltf_charlie_table(GLTF_STRIDE)),
     "ospray_ggx": ("ospray_ggx.csv", ospray_ggx_table),
+    "materialx": ("materialx_albedo_table.csv", materialx_table),
     "ospray_glass": ("ospray_dielectric.csv", lambda: ospray_dielectric_table("glass")),
     "ospray_reflection": ("ospray_dielectric_reflection.csv", lambda: ospray_dielectric_table("reflection")),
 }

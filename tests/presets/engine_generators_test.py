@@ -22,6 +22,9 @@ What each comparison shows:
   dielectric and its reflection alone at eta in [1/3, 1], to the
   stratification's error; transposed or with the eta axis reversed, 20 times
   worse or more.
+- MaterialX (64 samples, float): A, B and the sheen albedo (where it is at
+  most 1) to the generator's sampling error; transposed, 5 times worse or
+  more.
 The generators are deterministic (fixed sequences), so the bounds, set with a
 margin over the measured values (docs/presets.md, "The engines' own
 tables, measured"), cannot flicker.
@@ -163,6 +166,20 @@ def main():
                                 for x in texels])
             expect(same < 2e-3, f"OSPRay {name}: RMS {same:.3g}")
             expect(reversed_eta > 20 * same, f"OSPRay {name}, eta reversed: RMS {reversed_eta:.3g}")
+
+        # MaterialX: albedoTable.exr, R = A, G = B, B = the Imageworks sheen
+        # albedo, x = NdotV, y = alpha; 64 samples per texel.
+        texels = generated(engine_generators.materialx_table)
+        ours = measure_peer_presets.dump_pixels(
+            os.path.join(measure_peer_presets.bake_preset(lutbake, "materialx", out),
+                         "albedoTable.exr"))
+        for c, (key, bound) in enumerate((("A", 8e-3), ("B", 2e-3), ("sheen", 6e-3))):
+            same = rms([float(x[key]) - ours[(int(x["i"]), int(x["j"]))][c] for x in texels
+                        if key != "sheen" or ours[(int(x["i"]), int(x["j"]))][c] <= 1.0])
+            transposed = rms([float(x[key]) - ours[(int(x["j"]), int(x["i"]))][c] for x in texels
+                              if key != "sheen" or ours[(int(x["j"]), int(x["i"]))][c] <= 1.0])
+            expect(same < bound, f"MaterialX {key}: RMS {same:.3g} (its 64 samples)")
+            expect(transposed > 5 * same, f"MaterialX {key} transposed: RMS {transposed:.3g}")
     if failures:
         print(f"{len(failures)} comparison(s) failed")
         return 1

@@ -61,7 +61,7 @@ const PresetFileCheck *FileCheck(const PresetCheck &check, const std::string &fi
 TEST(Presets, EveryEngineOfTheIssueIsListed) {
   for (const char *name :
        {"filament", "unreal", "unity-hdrp", "godot", "threejs", "gltf-sample-renderer",
-        "learnopengl", "eevee", "cycles", "babylon", "ospray"})
+        "learnopengl", "eevee", "cycles", "babylon", "ospray", "materialx"})
     EXPECT_NE(FindPreset(name), nullptr) << name;
   // The listing (`lutbake presets --json`) names every preset.
   const nlohmann::json listed = nlohmann::json::parse(PresetListJson());
@@ -569,8 +569,8 @@ TEST(Presets, HdrpCharlieMatchesBruteForce) {
 TEST(Presets, CheckReadsEveryPresetDirectoryBack) {
   // unity-hdrp is left out: its Charlie texture takes ~35 s to integrate
   // (twice here); HdrpCharlieMatchesBruteForce holds its values.
-  for (const char *name :
-       {"filament-mobile", "unreal", "godot", "threejs", "learnopengl", "eevee", "cycles"}) {
+  for (const char *name : {"filament-mobile", "unreal", "godot", "threejs", "learnopengl", "eevee",
+                           "cycles", "materialx"}) {
     const auto dir = test::Scratch(std::string("preset_check_") + name);
     // Cycles' glass averages take minutes: its 2D tables here, its glass
     // tables in CyclesGlassPresetJsonAndCheck.

@@ -93,6 +93,7 @@ struct PresetModel {
   // The Charlie sheen channel (meaning "sheen_E"): its visibility and alpha.
   SheenVisibility sheenVisibility = SheenVisibility::kCharlie;
   PresetAlpha sheenAlpha = PresetAlpha::kLinear;
+  double sheenAlphaMin = 0.0;  // sheen_E at alpha = max(alpha, sheenAlphaMin)
 };
 
 // A channel: stored = scale * meaning + offset, meaning one of
