@@ -122,6 +122,7 @@ nlohmann::ordered_json ModelJson(const PresetTexture &texture) {
     if (c.meaning == "sheen_E") {
       model["sheenVisibility"] = ToString(texture.model.sheenVisibility);
       model["sheenAlpha"] = ToString(texture.model.sheenAlpha);
+      if (texture.model.sheenAlphaMin > 0.0) model["sheenAlphaMin"] = texture.model.sheenAlphaMin;
       break;
     }
   return model;

@@ -17,17 +17,25 @@
 // errorStorage unorm8 / unorm16), is a tEXt chunk; so are quantisationStep
 // and channelMapping. No gAMA, sRGB or tIME chunk: the values are data, and
 // equal tables give equal files.
+//
+// --format png-rgbd (presets only: Babylon.js's BRDF textures): 8-bit RGBA,
+// RGB = a texel's one to three channels and A = their shared divisor, in
+// Babylon.js's RGBD (rgbd.h): value = (rgb / 255)^2.2 / (a / 255), every
+// texel encoded with the divisor of smallest error. Values >= 0, up to
+// 255; errorStorage rgbd8, the bounds those of the decoded values.
 #include <zlib.h>
 
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <stdexcept>
 
 #include "file_io.h"
 #include "format_list.h"
 #include "lutbake/formats/table_reader.h"
 #include "lutbake/formats/writer.h"
+#include "lutbake/tables/rgbd.h"
 
 namespace lutbake {
 
@@ -59,16 +67,35 @@ void PutChunk(std::string *out, const char type[4], const std::string &data) {
                   crc32(0L, reinterpret_cast<const Bytef *>(typed.data()), typed.size())));
 }
 
+// The RGBA bytes of a texel in RGBD.
+RgbdTexel EncodeTexel(const Table &table, size_t texel, const std::string &path) {
+  try {
+    return RgbdEncode(&table.values[texel * table.channels], table.channels);
+  } catch (const std::invalid_argument &e) {
+    throw IoError("cannot write " + path + " in RGBD: " + e.what());
+  }
+}
+
+std::string RgbdMapping(int channels) {
+  return "RGBD: channel c = (byte c / 255)^2.2 / (A / 255), " + std::to_string(channels) +
+         " channel(s) in R, G, B (unused bytes 0)";
+}
+
 class PngWriter final : public TableWriter {
  public:
-  explicit PngWriter(int bits) : bits_(bits) {}
-  const char *formatName() const override { return bits_ == 8 ? "png8" : "png16"; }
+  explicit PngWriter(ValueType type) : type_(type), bits_(type == ValueType::kUnorm16 ? 16 : 8) {}
+  const char *formatName() const override {
+    return type_ == ValueType::kRgbd8 ? "png-rgbd" : bits_ == 8 ? "png8" : "png16";
+  }
   const char *extension() const override { return ".png"; }
   void Write(const Table &table, const std::string &path, const WriteOptions &) const override {
-    RequireUnitRange(table, path, "PNG");
-    const ValueType type = bits_ == 8 ? ValueType::kUnorm8 : ValueType::kUnorm16;
+    const bool rgbd = type_ == ValueType::kRgbd8;
+    if (!rgbd) RequireUnitRange(table, path, "PNG");
+    if (rgbd && table.channels > 3)
+      throw IoError("cannot write " + path + ": RGBD holds at most three channels");
+    const ValueType type = type_;
     const int width = table.width(), height = table.height() * table.depth();
-    const int fileChannels = table.channels == 1 ? 1 : 3;
+    const int fileChannels = rgbd ? 4 : table.channels == 1 ? 1 : 3;
     const int bytesPerSample = bits_ / 8;
     // Rows, each led by its filter byte (0: none), samples big-endian.
     const size_t rowBytes = static_cast<size_t>(width) * fileChannels * bytesPerSample;
@@ -78,6 +105,12 @@ class PngWriter final : public TableWriter {
       raw.push_back('\0');
       for (int x = 0; x < width; ++x) {
         const size_t t = static_cast<size_t>(y) * width + x;
+        if (rgbd) {
+          const RgbdTexel texel = EncodeTexel(table, t, path);
+          raw.append(texel.rgb.begin(), texel.rgb.end());
+          raw.push_back(static_cast<char>(texel.d));
+          continue;
+        }
         for (int c = 0; c < fileChannels; ++c) {
           const unsigned q =
               c < table.channels ? QuantizeUnorm(table.values[t * table.channels + c], bits_) : 0u;
@@ -98,12 +131,16 @@ class PngWriter final : public TableWriter {
     PutU32(&ihdr, static_cast<uint32_t>(width));
     PutU32(&ihdr, static_cast<uint32_t>(height));
     ihdr.push_back(static_cast<char>(bits_));
-    ihdr.push_back(fileChannels == 1 ? 0 : 2);  // colour type: grey, RGB
-    ihdr.append(3, '\0');                       // deflate, adaptive filtering, no interlace
+    ihdr.push_back(fileChannels == 1 ? 0 : fileChannels == 3 ? 2 : 6);  // grey, RGB, RGBA
+    ihdr.append(3, '\0');  // deflate, adaptive filtering, no interlace
     PutChunk(&file, "IHDR", ihdr);
     std::vector<std::pair<std::string, std::string>> metadata = MetadataForStorage(table, type);
-    metadata.emplace_back("quantisationStep", "1/" + std::to_string((1u << bits_) - 1u));
-    metadata.emplace_back("channelMapping", ChannelMapping(table.channels));
+    if (rgbd) {
+      metadata.emplace_back("channelMapping", RgbdMapping(table.channels));
+    } else {
+      metadata.emplace_back("quantisationStep", "1/" + std::to_string((1u << bits_) - 1u));
+      metadata.emplace_back("channelMapping", ChannelMapping(table.channels));
+    }
     for (const auto &[key, value] : metadata) {
       // tEXt: a Latin-1 keyword of 1 to 79 characters, a zero, the text.
       if (key.empty() || key.size() > 79 || value.find('\0') != std::string::npos)
@@ -117,6 +154,7 @@ class PngWriter final : public TableWriter {
   }
 
  private:
+  ValueType type_;
   int bits_;
 };
 
@@ -157,7 +195,9 @@ bool Unfilter(std::string *raw, size_t rowBytes, int height, int bytesPerPixel) 
 
 }  // namespace
 
-std::unique_ptr<TableWriter> MakePngWriter(int bits) { return std::make_unique<PngWriter>(bits); }
+std::unique_ptr<TableWriter> MakePngWriter(int bits) {
+  return std::make_unique<PngWriter>(bits == 8 ? ValueType::kUnorm8 : ValueType::kUnorm16);
+}
 
 Table ReadPngTable(const std::string &path) {
   std::ifstream in(path, std::ios::binary);
@@ -165,7 +205,8 @@ Table ReadPngTable(const std::string &path) {
   const std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const auto *bytes = reinterpret_cast<const unsigned char *>(file.data());
   const auto refuse = [&](const std::string &why) -> IoError {
-    return IoError(path + ": " + why + " (lutbake reads 8- or 16-bit grey or RGB PNGs)");
+    return IoError(path + ": " + why +
+                   " (lutbake reads 8- or 16-bit grey or RGB PNGs, and 8-bit RGBA in RGBD)");
   };
   if (file.size() < 8 || std::memcmp(bytes, kSignature, 8) != 0) throw refuse("not a PNG");
   Table table;
@@ -202,19 +243,22 @@ Table ReadPngTable(const std::string &path) {
     at += 12 + length;
   }
   if (!ended) throw refuse("no IEND chunk");
-  if ((bits != 8 && bits != 16) || (colourType != 0 && colourType != 2) || width <= 0 ||
+  const bool rgbd = colourType == 6 && bits == 8;
+  if ((bits != 8 && bits != 16) || (colourType != 0 && colourType != 2 && !rgbd) || width <= 0 ||
       height <= 0)
     throw refuse("bit depth " + std::to_string(bits) + ", colour type " +
                  std::to_string(colourType));
-  const int fileChannels = colourType == 0 ? 1 : 3;
+  const int fileChannels = colourType == 0 ? 1 : rgbd ? 4 : 3;
   const std::string *storage = table.FindMetadata("errorStorage");
-  const std::string expected = bits == 8 ? "unorm8" : "unorm16";
+  const std::string expected = rgbd ? "rgbd8" : bits == 8 ? "unorm8" : "unorm16";
   if (!storage || *storage != expected)
     throw IoError(path + ": tEXt errorStorage is not " + expected + " for a " +
                   std::to_string(bits) + "-bit PNG");
   // RGB holds two channels and an unused B, or three (channelMapping says which).
   const std::string *mapping = table.FindMetadata("channelMapping");
   table.channels = fileChannels == 1 ? 1 : mapping && *mapping == ChannelMapping(3) ? 3 : 2;
+  for (int c = 1; rgbd && c <= 3; ++c)
+    if (mapping && *mapping == RgbdMapping(c)) table.channels = c;
   table.channelNames = table.channels == 1   ? std::vector<std::string>{"Y"}
                        : table.channels == 2 ? std::vector<std::string>{"R", "G"}
                                              : std::vector<std::string>{"R", "G", "B"};
@@ -243,7 +287,13 @@ Table ReadPngTable(const std::string &path) {
   const auto *q = reinterpret_cast<const unsigned char *>(raw.data());
   const size_t texels = static_cast<size_t>(width) * height;
   table.values.reserve(texels * table.channels);
-  for (size_t t = 0; t < texels; ++t)
+  for (size_t t = 0; rgbd && t < texels; ++t)
+    for (int c = 0; c < table.channels; ++c) {
+      const unsigned char d = q[t * 4 + 3];
+      if (d == 0) throw refuse("an RGBD divisor of 0 at texel " + std::to_string(t));
+      table.values.push_back(RgbdDecode(q[t * 4 + c], d));
+    }
+  for (size_t t = 0; !rgbd && t < texels; ++t)
     for (int c = 0; c < table.channels; ++c) {
       const size_t i = (t * fileChannels + c) * (bits / 8);
       const unsigned v = bits == 8 ? q[i] : (unsigned{q[i]} << 8) | q[i + 1];
@@ -256,7 +306,9 @@ std::vector<TableFormat> PngFormats() {
   return {{"png8", ".png", FixedStorage(ValueType::kUnorm8), [] { return MakePngWriter(8); },
            ReadPngTable, true},
           {"png16", ".png", FixedStorage(ValueType::kUnorm16), [] { return MakePngWriter(16); },
-           ReadPngTable, true}};
+           ReadPngTable, true},
+          {"png-rgbd", ".png", FixedStorage(ValueType::kRgbd8),
+           [] { return std::make_unique<PngWriter>(ValueType::kRgbd8); }, ReadPngTable, false}};
 }
 
 }  // namespace lutbake

@@ -15,6 +15,7 @@
 #include "lutbake/formats/writer.h"
 #include "lutbake/integrators/albedo_quadrature.h"
 #include "lutbake/integrators/sheen_quadrature.h"
+#include "lutbake/models/zeltner_sheen_ltc.h"
 #include "lutbake/tables/table_definition.h"
 
 namespace lutbake {
@@ -25,6 +26,7 @@ const char *ToString(PresetMapping mapping) {
     case PresetMapping::kSquare: return "u^2";
     case PresetMapping::kOneMinusSquare: return "1 - u^2";
     case PresetMapping::kIorOfF0Root4: return "(1 + u^2) / (1 - u^2)";
+    case PresetMapping::kLinearRange: return "lowest + u (highest - lowest)";
   }
   return "?";
 }
@@ -62,6 +64,7 @@ double PresetAxis::Quantity(int i) const {
   // without cancellation. u = 1 gives +infinity, which the clamp bounds.
   if (mapping == PresetMapping::kIorOfF0Root4)
     q = u < 1.0 ? (1.0 + u * u) / ((1.0 - u) * (1.0 + u)) : std::numeric_limits<double>::infinity();
+  if (mapping == PresetMapping::kLinearRange) q = lowest + u * (highest - lowest);
   return std::clamp(q, lowest, highest);
 }
 
@@ -75,7 +78,8 @@ constexpr double kSheenBTolerance = 1e-7;
 
 struct Needs {
   bool splitSum = false, sheen = false, sheenB = false, f82 = false, average = false;
-  bool disney = false, glass = false, glassAverage = false;
+  bool disney = false, glass = false, glassAverage = false, zeltner = false;
+  bool spec = false, specAverage = false;  // the dielectric's reflection alone
 };
 
 Needs NeedsOf(const PresetTexture &texture) {
@@ -97,6 +101,12 @@ Needs NeedsOf(const PresetTexture &texture) {
       needs.glass = true;
     else if (c.meaning == "glass_Eavg")
       needs.glassAverage = true;
+    else if (c.meaning == "spec_E")
+      needs.spec = true;
+    else if (c.meaning == "spec_Eavg")
+      needs.specAverage = true;
+    else if (c.meaning == "zeltner_a" || c.meaning == "zeltner_b" || c.meaning == "zeltner_R")
+      needs.zeltner = true;
     else if (c.meaning != "one" && c.meaning != "zero" && c.meaning != "fabric_lambert")
       throw std::invalid_argument("preset channel '" + c.meaning + "' is not known");
   }
@@ -172,13 +182,14 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
     if (quantity == "roughness") roughnessAxis = static_cast<int>(a);
     if (quantity == "eta" || quantity == "1/eta") etaAxis = static_cast<int>(a);
   }
-  const bool averaged = needs.average || needs.glassAverage;
+  const bool averaged = needs.average || needs.glassAverage || needs.specAverage;
+  const bool dielectric = needs.glass || needs.glassAverage || needs.spec || needs.specAverage;
   if (roughnessAxis < 0 || (muAxis < 0 && !averaged))
     throw std::invalid_argument(texture.file +
                                 ": a preset texture needs its mu and roughness axes");
-  if ((needs.glass || needs.glassAverage) != (etaAxis >= 0))
-    throw std::invalid_argument(texture.file +
-                                ": the glass channels, and only they, take an eta axis");
+  if (dielectric != (etaAxis >= 0))
+    throw std::invalid_argument(
+        texture.file + ": the dielectric (glass, spec) channels, and only they, take an eta axis");
 
   Table table;
   table.name = texture.file.substr(0, texture.file.find('.'));
@@ -243,7 +254,8 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
               eta = ea.quantity == "1/eta" ? 1.0 / q : q;
             }
             const double alpha = AlphaOf(model.alpha, roughness, model.alphaMin);
-            PointValue split, sheen, sheenB, f82, average, disney, glass, glassAverage;
+            PointValue split, sheen, sheenB, f82, average, disney, glass, glassAverage, spec,
+                specAverage;
             if (needs.sheenB) {
               const double sheenAlpha =
                   model.sheenAlpha == PresetAlpha::kSquared ? roughness * roughness : roughness;
@@ -254,7 +266,12 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
             }
             if (needs.disney) disney = DisneyDiffuseAlbedo(mu, roughness);
             if (needs.splitSum) split = SplitSum(model, mu, alpha);
-            if (needs.sheen) sheen = TableNamed("sheen_E").Evaluate(sheenSettings, mu, roughness);
+            // The sheen's roughness with the engine's clamp of its alpha.
+            const double sheenRoughness = model.sheenAlpha == PresetAlpha::kSquared
+                                              ? std::max(roughness, std::sqrt(model.sheenAlphaMin))
+                                              : std::max(roughness, model.sheenAlphaMin);
+            if (needs.sheen)
+              sheen = TableNamed("sheen_E").Evaluate(sheenSettings, mu, sheenRoughness);
             if (needs.f82)
               f82 = TableNamed("f82").Evaluate(microfacetSettings, mu, std::sqrt(alpha));
             if (needs.average)
@@ -272,12 +289,22 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
                       TableNamed("glass_Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), eta);
               }
             }
+            if (needs.spec)
+              spec = TableNamed("spec_E").Evaluate3D(microfacetSettings, mu, std::sqrt(alpha), eta);
+            if (needs.specAverage)
+              specAverage =
+                  TableNamed("spec_Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), eta);
             // The single-valued meanings and the integral each reads.
             const std::pair<const char *, const PointValue *> kSingle[] = {
-                {"sheen_E", &sheen},          {"f82", &f82},
-                {"Eavg", &average},           {"sheen_B", &sheenB},
-                {"disney_diffuse", &disney},  {"glass_E", &glass},
-                {"glass_Eavg", &glassAverage}};
+                {"sheen_E", &sheen},
+                {"f82", &f82},
+                {"Eavg", &average},
+                {"sheen_B", &sheenB},
+                {"disney_diffuse", &disney},
+                {"glass_E", &glass},
+                {"glass_Eavg", &glassAverage},
+                {"spec_E", &spec},
+                {"spec_Eavg", &specAverage}};
             for (int c = 0; c < table.channels; ++c) {
               const PresetChannel &channel = texture.channels[static_cast<size_t>(c)];
               double value = 0.0, error = 0.0;
@@ -293,6 +320,12 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
                 value = 1.0 - 0.5 * alpha;
               } else if (channel.meaning == "one") {
                 value = 1.0;
+              } else if (needs.zeltner && channel.meaning.rfind("zeltner_", 0) == 0) {
+                // The published table, at alpha = the roughness axis.
+                const std::array<double, 3> ltc = ZeltnerSheenLtc(mu, roughness);
+                value = ltc[channel.meaning == "zeltner_a"   ? 0
+                            : channel.meaning == "zeltner_b" ? 1
+                                                             : 2];
               } else {
                 for (const auto &[meaning, integral] : kSingle)
                   if (channel.meaning == meaning) {
@@ -302,8 +335,9 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
               }
               const size_t at = table.index(ix, iy, iz, c);
               const double stored = channel.scale * value + channel.offset;
-              table.values[at] = std::min(stored, channel.clampMax);
-              table.errors[at] = std::fabs(channel.scale) * error + (stored - table.values[at]);
+              table.values[at] = std::clamp(stored, channel.clampMin, channel.clampMax);
+              table.errors[at] =
+                  std::fabs(channel.scale) * error + std::abs(stored - table.values[at]);
             }
           }
         }

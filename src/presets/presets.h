@@ -17,6 +17,9 @@ const Preset &GltfSampleRendererPreset();
 const Preset &LearnOpenGlPreset();
 const Preset &EeveePreset();
 const Preset &CyclesPreset();
+const Preset &BabylonPreset();
+const Preset &OsprayPreset();
+const Preset &MaterialxPreset();
 
 // Axis helpers for the definitions: an axis of `count` texels over the
 // quantity "mu" or "roughness".

@@ -18,6 +18,9 @@ const std::vector<const Preset *> &AllPresets() {
       &LearnOpenGlPreset(),
       &EeveePreset(),
       &CyclesPreset(),
+      &BabylonPreset(),
+      &OsprayPreset(),
+      &MaterialxPreset(),
   };
   return presets;
 }

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "lutbake/tables/rgbd.h"
+
 namespace lutbake {
 
 const char *ToString(ValueType type) {
@@ -14,6 +16,7 @@ const char *ToString(ValueType type) {
     case ValueType::kHalf: return "half";
     case ValueType::kUnorm8: return "unorm8";
     case ValueType::kUnorm16: return "unorm16";
+    case ValueType::kRgbd8: return "rgbd8";
   }
   return "?";
 }
@@ -26,6 +29,10 @@ double StoredValue(double value, ValueType type) {
       return static_cast<double>(static_cast<float>(Imath::half(static_cast<float>(value))));
     case ValueType::kUnorm8: return QuantizeUnorm(value, 8) / 255.0;
     case ValueType::kUnorm16: return QuantizeUnorm(value, 16) / 65535.0;
+    case ValueType::kRgbd8: {
+      const RgbdTexel texel = RgbdEncode(&value, 1);
+      return RgbdDecode(texel.rgb[0], texel.d);
+    }
   }
   return value;
 }
@@ -54,6 +61,19 @@ double StoredBound(double value, double bound, ValueType type) {
 
 std::vector<double> StoredBounds(const Table &table, ValueType type) {
   std::vector<double> bounds(table.values.size());
+  if (type == ValueType::kRgbd8) {
+    // Texel by texel: the channels share the divisor.
+    const size_t channels = static_cast<size_t>(table.channels);
+    for (size_t t = 0; t + channels <= bounds.size(); t += channels) {
+      const RgbdTexel texel = RgbdEncode(&table.values[t], table.channels);
+      for (size_t c = 0; c < channels; ++c) {
+        const double moved = std::abs(RgbdDecode(texel.rgb[c], texel.d) - table.values[t + c]);
+        bounds[t + c] =
+            RoundUpToFloat((t + c < table.errors.size() ? table.errors[t + c] : 0.0) + moved);
+      }
+    }
+    return bounds;
+  }
   for (size_t i = 0; i < bounds.size(); ++i)
     bounds[i] = StoredBound(table.values[i], i < table.errors.size() ? table.errors[i] : 0.0, type);
   return bounds;

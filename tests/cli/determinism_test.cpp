@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "lutbake/formats/output_transaction.h"
 #include "lutbake/formats/atomic_output.h"
+#include "lutbake/formats/output_transaction.h"
 #include "lutbake/tables/table_definition.h"
 #include "support/cli_run.h"
 
@@ -178,10 +178,18 @@ TEST(Determinism, TextureAndSourceFormatsAndShaders) {
 // Cycles, the 2D tables and the 3D glass_E (its glass averages take
 // minutes).
 TEST(Determinism, EnginePresets) {
-  for (const char *preset : {"unreal", "godot", "cycles", "eevee", "threejs", "filament-mobile"}) {
+  for (const char *preset : {"unreal", "godot", "cycles", "eevee", "threejs", "filament-mobile",
+                             "babylon", "ospray", "materialx"}) {
     std::string options = std::string("--preset ") + preset;
     if (options == "--preset cycles")
       options += " --files table_ggx_E.h,table_ggx_Eavg.h,table_ggx_glass_E.h";
+    // Babylon's 128^2 OpenPBR texture (RGBD and DDS) and its fuzz texture.
+    if (options == "--preset babylon")
+      options +=
+          " --files openPBREnvironmentBRDFTexture.png,environmentFuzzBRDFTexture.png,"
+          "openPBREnvironmentBRDFTexture.dds";
+    if (options == "--preset ospray")
+      options += " --files MicrofacetAlbedoTable_dir.ih,MicrofacetAlbedoTable_avg.ih";
     EXPECT_GE(ExpectSameFilesForEveryThreadCount(std::string("preset_") + preset, options), 2)
         << preset;
   }

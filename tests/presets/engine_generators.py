@@ -35,6 +35,12 @@ engines (default: unreal godot hdrp_ggx hdrp_charlie gltf_ggx gltf_charlie):
       Common.hlsl (helpers).
   gltf_ggx       -> gltf_lut_ggx.csv
   gltf_charlie   -> gltf_lut_charlie.csv
+  ospray_ggx, ospray_glass, ospray_reflection -> ospray_ggx.csv, ospray_dielectric.csv,
+                    ospray_dielectric_reflection.csv (not in the default set)
+      OSPRay MicrofacetAlbedoTables.ispc: GGX E 32 x 32 and its averages, the dielectric (eta in
+      [1/3, 1]) and its reflection alone 16^3, 1024 stratified samples, float
+  materialx      -> materialx_albedo_table.csv (not in the default set)
+      MaterialX mx_generate_dir_albedo_table: 128 x 128, 64 spherical Fibonacci samples, float
   gltf           -> both glTF tables
       KhronosGroup glTF Sample Renderer lut_ggx (R = A, G = B) and lut_charlie (B = sheen albedo), 1024 x 1024, 512 samples,
       RGBA16F, rendered at start-up: source/shaders/ibl_filtering.frag (@d3d2f605306756e76396073d3aef81b71012c16d, LUT()),
@@ -651,6 +657,195 @@ def sanity_split_sum(name, A, B, nv, rough, la, lb):
 
 
 # ---------------------------------------------------------------------------------------------
+# ---------------------------------------------------------------------------------------------
+# OSPRay: MicrofacetAlbedoTables.ispc, built at start-up on the CPU in float (ISPC): 32 x 32
+# stratified samples of the GGX visible normals per texel (Heitz 2017, sampleVisible), weight
+# G2 / G1 (height-correlated), min(mean, 1); averages a 1025-point trapezoid over the linearly
+# interpolated directional table, min(., 1).
+# ---------------------------------------------------------------------------------------------
+OSPRAY_SRC = ("RenderKit/ospray modules/cpu/render/bsdfs/MicrofacetAlbedoTables.ispc (@01beea16), "
+              "MicrofacetAlbedo.ih, GGXDistribution.ih (sampleVisible, evalG1, evalG2), Fresnel.ih, "
+              "Optics.ih, MicrofacetDistribution.ih (roughnessToAlpha: max(r^2, 0.001)) (@078c589a)")
+
+
+def ospray_lambda(alpha, x, y, z):
+    """GGXDistribution.ih evalLambda (isotropic alpha), float32."""
+    inv_a2 = (np.square(x * alpha) + np.square(y * alpha)) / np.square(z)
+    return f32(0.5) * (f32(-1.0) + np.sqrt(f32(1.0) + inv_a2))
+
+
+def ospray_samples(cos_o, alpha):
+    """For each view cosine (array), the 32 x 32 stratified visible normals: wo, wh (float32)."""
+    n = 32
+    u = np.minimum((np.arange(n, dtype=np.float32) + f32(0.5)) / f32(n), f32(1.0 - 1e-6))
+    sx, sy = np.meshgrid(u, u, indexing="ij")                # s = ((i + 0.5) / n, (j + 0.5) / n)
+    sx, sy = sx.ravel()[None, :], sy.ravel()[None, :]
+    cos_o = np.maximum(np.asarray(cos_o, np.float32), f32(1e-6))[:, None]
+    wo = (np.sqrt(np.maximum(f32(0.0), f32(1.0) - cos_o * cos_o)), np.zeros_like(cos_o), cos_o)
+    vx, vy, vz = normalize3(alpha * wo[0], alpha * wo[1], wo[2])
+    # T1 = normalize(cross(V, z)) = normalize(V.y, -V.x, 0) unless V is (nearly) the normal
+    tl = np.sqrt(vy * vy + vx * vx)
+    pole = vz >= f32(0.9999)
+    t1x = np.where(pole, f32(1.0), vy / np.where(pole, f32(1.0), tl))
+    t1y = np.where(pole, f32(0.0), -vx / np.where(pole, f32(1.0), tl))
+    t1z = np.zeros_like(vz)
+    t2x, t2y, t2z = t1y * vz - t1z * vy, t1z * vx - t1x * vz, t1x * vy - t1y * vx
+    a = f32(1.0) / (f32(1.0) + vz)
+    r = np.sqrt(sx)
+    pi = f32(math.pi)
+    lower = sy < a
+    phi = np.where(lower, sy / a * pi, pi + (sy - a) / (f32(1.0) - a) * pi)
+    p1 = r * np.cos(phi)
+    p2 = r * np.sin(phi) * np.where(lower, f32(1.0), vz)
+    p3 = np.sqrt(np.maximum(f32(0.0), f32(1.0) - p1 * p1 - p2 * p2))
+    hx, hy, hz = p1 * t1x + p2 * t2x + p3 * vx, p1 * t1y + p2 * t2y + p3 * vy, p1 * t1z + p2 * t2z + p3 * vz
+    wh = normalize3(alpha * hx, alpha * hy, np.maximum(f32(0.0), hz))
+    return wo, wh
+
+
+def ospray_albedo(cos_o, roughness, eta=None, lobes="reflection"):
+    """MicrofacetAlbedo_integrate (eta None), MicrofacetDielectricAlbedo_integrate (lobes 'both')
+    or MicrofacetDielectricReflectionAlbedo_integrate (lobes 'reflection' with eta)."""
+    alpha = np.maximum(np.square(f32(roughness)), f32(0.001))
+    wo, wh = ospray_samples(cos_o, alpha)
+    c_oh = wo[0] * wh[0] + wo[1] * wh[1] + wo[2] * wh[2]
+    lam_o = ospray_lambda(alpha, *wo)
+    g1 = np.where(wo[2] * c_oh > 0, f32(1.0) / (f32(1.0) + lam_o), f32(0.0))
+    rcp_g1 = np.where(g1 > 0, f32(1.0) / np.where(g1 > 0, g1, f32(1.0)), f32(0.0))   # rcp_safe
+
+    def g2(wi, c_ih):
+        ok = (wo[2] * c_oh > 0) & (wi[2] * c_ih > 0)
+        return np.where(ok, f32(1.0) / (f32(1.0) + lam_o + ospray_lambda(alpha, *wi)), f32(0.0))
+
+    wr = tuple(f32(2.0) * c_oh * h - o for h, o in zip(wh, wo))          # reflect(wo, wh)
+    reflection = np.where(wr[2] > 0, g2(wr, c_oh) * rcp_g1, f32(0.0))
+    if eta is None:
+        weight = reflection
+    else:
+        eta = f32(eta)
+        sqr_cos_t = f32(1.0) - eta * eta * (f32(1.0) - c_oh * c_oh)
+        tir = sqr_cos_t < 0
+        cos_t = np.where(tir, f32(0.0), np.sqrt(np.maximum(sqr_cos_t, f32(0.0))))
+        rper = (eta * c_oh - cos_t) / (eta * c_oh + cos_t)
+        rpar = (c_oh - eta * cos_t) / (c_oh + eta * cos_t)
+        fresnel = np.where(tir, f32(1.0), f32(0.5) * (rpar * rpar + rper * rper))
+        weight = fresnel * reflection
+        if lobes == "both":
+            wt = tuple(eta * (c_oh * h - o) - cos_t * h for h, o in zip(wh, wo))  # refract
+            c_ih = wt[0] * wh[0] + wt[1] * wh[1] + wt[2] * wh[2]
+            weight = weight + np.where(wt[2] < 0, (f32(1.0) - fresnel) * g2(wt, c_ih) * rcp_g1, f32(0.0))
+    return np.minimum(weight.astype(np.float32).sum(axis=1, dtype=np.float32) / f32(1024), f32(1.0))
+
+
+def ospray_average(directional):
+    """MicrofacetAlbedoTable_integrateAvg: trapezoid over 1025 cosines of the interpolated table."""
+    size = len(directional)
+    cos_o = np.arange(1025, dtype=np.float32) / f32(1024)
+    x = cos_o * f32(size - 1)
+    i = np.minimum(np.floor(x).astype(int), size - 2)
+    value = directional[i] * (f32(1.0) - (x - i)) + directional[i + 1] * (x - i)
+    weight = np.where((np.arange(1025) == 0) | (np.arange(1025) == 1024), f32(0.5), f32(1.0))
+    return min(2.0 * float(np.sum(value * cos_o * weight, dtype=np.float32)) / 1024, 1.0)
+
+
+def ospray_ggx_table():
+    cos_o = np.arange(32, dtype=np.float32) / f32(31)
+    header = [OSPRAY_SRC, "MicrofacetAlbedoTable_dir[j * 32 + i]: i = cosThetaO = i / 31, j = roughness = j / 31; "
+              "avg: the trapezoid average of row j"]
+    rows, e = [], np.zeros((32, 32))
+    for j in range(32):
+        e[j] = ospray_albedo(cos_o, np.float32(j) / f32(31))
+        avg = ospray_average(e[j].astype(np.float32))
+        for i in range(32):
+            rows.append([i, j, "%.9g" % e[j, i], "%.9g" % avg])
+    checks = ["E at the smoothest row: %.6f .. %.6f (1 but for the clamp alpha >= 0.001)" % (e[0].min(), e[0].max())]
+    return header, ["i", "j", "E", "Eavg"], rows, checks
+
+
+def ospray_dielectric_table(kind):
+    """kind 'glass' (eta in [1/3, 1], both lobes) or 'reflection' (the reflection alone)."""
+    cos_o = np.arange(16, dtype=np.float32) / f32(15)
+    lo, hi = f32(1.0) / f32(3.0), f32(1.0)
+    header = [OSPRAY_SRC, "Microfacet%sAlbedoTable_dir[(k * 16 + j) * 16 + i]: i = cosThetaO = i / 15, "
+              "j: eta = lerp(j / 15, 1/3, 1), k = roughness = k / 15; avg: trapezoid average of each (j, k)"
+              % ("Dielectric" if kind == "glass" else "DielectricReflection")]
+    rows = []
+    for k in range(16):
+        for j in range(16):
+            t = f32(j) / f32(15)
+            eta = (f32(1.0) - t) * lo + t * hi
+            e = ospray_albedo(cos_o, np.float32(k) / f32(15), eta, "both" if kind == "glass" else "reflection")
+            avg = ospray_average(e.astype(np.float32))
+            for i in range(16):
+                rows.append([i, j, k, "%.9g" % e[i], "%.9g" % avg])
+    return header, ["i", "j", "k", "E", "Eavg"], rows, []
+
+
+# ---------------------------------------------------------------------------------------------
+# MaterialX: mx_generate_dir_albedo_table (GPU, float), 64 spherical Fibonacci samples per
+# texel: GGX A, B by visible-normal sampling (a spherical cap, Dupuy and Benyoub 2023), weights
+# G2 (height-correlated) / G1; the Imageworks sheen by uniform hemisphere samples. 128 x 128 float.
+# ---------------------------------------------------------------------------------------------
+MATERIALX_SRC = ("AcademySoftwareFoundation/MaterialX@4177b2cb libraries/pbrlib/genglsl/lib/"
+                 "mx_generate_albedo_table.glsl, mx_microfacet.glsl (mx_spherical_fibonacci), "
+                 "mx_microfacet_specular.glsl (mx_ggx_dir_albedo_monte_carlo, mx_ggx_importance_sample_VNDF, "
+                 "mx_ggx_smith_G1/G2), mx_microfacet_sheen.glsl (mx_imageworks_sheen_dir_albedo_monte_carlo); "
+                 "source/MaterialXView/Viewer.cpp ALBEDO_TABLE_SIZE 128")
+
+
+def materialx_table(size=128):
+    eps = f32(1e-8)
+    count = 64
+    k = np.arange(count, dtype=np.float32)
+    xi_x = (k + f32(0.5)) / f32(count)
+    xi_y = np.mod((k + f32(1.0)) * f32(1.6180339887498948), f32(1.0))
+    u = (np.arange(size, dtype=np.float32) + f32(0.5)) / f32(size)
+    nv = np.clip(u, eps, f32(1.0))[None, :, None]                 # [1, x, sample]
+    alpha = u[:, None, None]                                       # [y, 1, 1]
+    vx, vz = np.sqrt(f32(1.0) - nv * nv), nv
+    # mx_ggx_importance_sample_VNDF: a spherical cap about the stretched view.
+    sx, sy, sz = normalize3(vx * alpha, np.zeros_like(vx * alpha), vz + f32(0.0) * alpha)
+    phi = f32(2.0 * math.pi) * xi_x
+    z = (f32(1.0) - xi_y) * (f32(1.0) + sz) - sz
+    sin_t = np.sqrt(np.clip(f32(1.0) - z * z, f32(0.0), f32(1.0)))
+    hx, hy, hz = normalize3((sin_t * np.cos(phi) + sx) * alpha, (sin_t * np.sin(phi) + sy) * alpha,
+                            np.maximum(z + sz, f32(0.0)))
+    vh_raw = vx * hx + vz * hz
+    lz = f32(2.0) * vh_raw * hz - vz                               # L = -reflect(V, H)
+    nl = np.clip(lz, eps, f32(1.0))
+    vh = np.clip(vh_raw, eps, f32(1.0))
+    fc = np.clip(f32(1.0) - vh, f32(0.0), f32(1.0)) ** 5
+    a2 = alpha * alpha
+    lam_l = np.sqrt(a2 + (f32(1.0) - a2) * nl * nl)
+    lam_v = np.sqrt(a2 + (f32(1.0) - a2) * nv * nv)
+    g2 = f32(2.0) * nl * nv / (lam_l * nv + lam_v * nl)
+    tan2 = (f32(1.0) - nv * nv) / (nv * nv)
+    g1 = f32(2.0) / (f32(1.0) + np.sqrt(f32(1.0) + a2 * tan2))
+    a_sum = (g2 * (f32(1.0) - fc)).sum(axis=2, dtype=np.float32)
+    b_sum = (g2 * fc).sum(axis=2, dtype=np.float32)
+    scale = g1[..., 0] * f32(count)
+    table_a, table_b = a_sum / scale, b_sum / scale
+    # Imageworks sheen: uniform hemisphere, Charlie D with r = max(roughness, 0.005), Ashikhmin V.
+    cos_l = f32(1.0) - xi_y
+    sin_l = np.sqrt(f32(1.0) - cos_l * cos_l)
+    lx, ly = np.cos(phi) * sin_l, np.sin(phi) * sin_l
+    hx, hy, hz = normalize3(lx + vx, ly + f32(0.0) * vx, cos_l + vz)
+    nl = np.clip(cos_l + f32(0.0) * vz, eps, f32(1.0))
+    nh = np.clip(hz, eps, f32(1.0))
+    inv_r = f32(1.0) / np.maximum(alpha, f32(0.005))
+    d = (f32(2.0) + inv_r) * np.power(f32(1.0) - nh * nh, inv_r * f32(0.5)) / f32(2.0 * math.pi)
+    brdf = d / (f32(4.0) * (nl + nv - nl * nv))
+    sheen = (brdf * nl / f32(0.5 / math.pi)).sum(axis=2, dtype=np.float32) / f32(count)
+    header = [MATERIALX_SRC, "texel (i, j): NdotV = (i + 0.5) / 128, alpha (and the sheen's roughness) = (j + 0.5) / 128; "
+              "R = A, G = B, B = Imageworks sheen albedo, float"]
+    rows = []
+    for j in range(size):
+        for i in range(size):
+            rows.append([i, j, "%.9g" % table_a[j, i], "%.9g" % table_b[j, i], "%.9g" % sheen[j, i]])
+    checks = ["A + B at alpha ~ 0, NdotV ~ 1: %.6f" % (table_a[0, -1] + table_b[0, -1])]
+    return header, ["i", "j", "A", "B", "sheen"], rows, checks
+
+
 ENGINES = {
     "unreal": ("unreal_preintegrated_gf.csv", unreal_table),
     "godot": ("godot_dfg.csv", lambda: godot_table("master")),
@@ -659,6 +854,10 @@ ENGINES = {
     "hdrp_charlie": ("hdrp_fgd_charlie.csv", hdrp_charlie_table),
     "gltf_ggx": ("gltf_lut_ggx.csv", lambda: gltf_ggx_table(GLTF_STRIDE)),
     "gltf_charlie": ("gltf_lut_charlie.csv", lambda: gltf_charlie_table(GLTF_STRIDE)),
+    "ospray_ggx": ("ospray_ggx.csv", ospray_ggx_table),
+    "materialx": ("materialx_albedo_table.csv", materialx_table),
+    "ospray_glass": ("ospray_dielectric.csv", lambda: ospray_dielectric_table("glass")),
+    "ospray_reflection": ("ospray_dielectric_reflection.csv", lambda: ospray_dielectric_table("reflection")),
 }
 DEFAULT = ["unreal", "godot", "hdrp_ggx", "hdrp_charlie", "gltf_ggx", "gltf_charlie"]
 

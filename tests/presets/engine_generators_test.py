@@ -18,6 +18,13 @@ What each comparison shows:
   noise; transposed, the texture is off by 0.06 or more. The column
   sqrt(NdotV) = 0 is left out (HDRP integrates it at NdotV = FLT_EPS, the
   preset at 0).
+- OSPRay (1024 stratified samples, float32 arrays): GGX E and E_avg, the
+  dielectric and its reflection alone at eta in [1/3, 1], to the
+  stratification's error; transposed or with the eta axis reversed, 20 times
+  worse or more.
+- MaterialX (64 samples, float): A, B and the sheen albedo (where it is at
+  most 1) to the generator's sampling error; transposed, 5 times worse or
+  more.
 The generators are deterministic (fixed sequences), so the bounds, set with a
 margin over the measured values (docs/presets.md, "The engines' own
 tables, measured"), cannot flicker.
@@ -121,6 +128,58 @@ def main():
                       for x in texels)
         expect(diffuse < 1e-3,
                f"HDRP Disney diffuse: max {diffuse:.3g}, its 10-bit storage (4.9e-4) and noise")
+
+        # OSPRay: the ISPC arrays, x = cosThetaO fastest. Its 32 x 32
+        # stratified samples (the top stratum of the visible normals stands
+        # for the GGX tail) leave E about 1.2e-2 low at mid roughness.
+        directory = os.path.join(out, "ospray")
+        subprocess.run([lutbake, "bake", "--preset", "ospray", "--files",
+                        "MicrofacetAlbedoTable_dir.ih,MicrofacetAlbedoTable_avg.ih,"
+                        "MicrofacetDielectricAlbedoTable_dir.ih,"
+                        "MicrofacetDielectricReflectionAlbedoTable_dir.ih", "--out", directory],
+                       check=True, capture_output=True)
+
+        def array(name):
+            with open(os.path.join(directory, name + ".ih")) as f:
+                text = f.read()
+            body = text[text.index("lutbake-values-begin"):text.index("lutbake-values-end")]
+            return np.array([float(v.rstrip("f")) for v in body.split()[1:] if v != "//"
+                             for v in [v.rstrip(",")]])
+
+        texels = generated(engine_generators.ospray_ggx_table)
+        ours = array("MicrofacetAlbedoTable_dir").reshape(32, 32)
+        averages = array("MicrofacetAlbedoTable_avg")
+        same = rms([float(x["E"]) - ours[int(x["j"]), int(x["i"])] for x in texels])
+        transposed = rms([float(x["E"]) - ours[int(x["i"]), int(x["j"])] for x in texels])
+        average = rms([float(x["Eavg"]) - averages[int(x["j"])] for x in texels])
+        expect(same < 4e-3, f"OSPRay E: RMS {same:.3g} (its stratified sampling)")
+        expect(transposed > 20 * same, f"OSPRay E transposed: RMS {transposed:.3g}")
+        expect(average < 4e-3, f"OSPRay E_avg: RMS {average:.3g}")
+        for kind, name in (("glass", "MicrofacetDielectricAlbedoTable_dir"),
+                           ("reflection", "MicrofacetDielectricReflectionAlbedoTable_dir")):
+            texels = [x for x in generated(lambda: engine_generators.ospray_dielectric_table(kind))
+                      if int(x["i"]) > 0]  # cosThetaO = 0: the generator's 1e-6, a kink
+            ours = array(name).reshape(16, 16, 16)
+            same = rms([float(x["E"]) - ours[int(x["k"]), int(x["j"]), int(x["i"])]
+                        for x in texels])
+            reversed_eta = rms([float(x["E"]) - ours[int(x["k"]), 15 - int(x["j"]), int(x["i"])]
+                                for x in texels])
+            expect(same < 2e-3, f"OSPRay {name}: RMS {same:.3g}")
+            expect(reversed_eta > 20 * same, f"OSPRay {name}, eta reversed: RMS {reversed_eta:.3g}")
+
+        # MaterialX: albedoTable.exr, R = A, G = B, B = the Imageworks sheen
+        # albedo, x = NdotV, y = alpha; 64 samples per texel.
+        texels = generated(engine_generators.materialx_table)
+        ours = measure_peer_presets.dump_pixels(
+            os.path.join(measure_peer_presets.bake_preset(lutbake, "materialx", out),
+                         "albedoTable.exr"))
+        for c, (key, bound) in enumerate((("A", 8e-3), ("B", 2e-3), ("sheen", 6e-3))):
+            same = rms([float(x[key]) - ours[(int(x["i"]), int(x["j"]))][c] for x in texels
+                        if key != "sheen" or ours[(int(x["i"]), int(x["j"]))][c] <= 1.0])
+            transposed = rms([float(x[key]) - ours[(int(x["j"]), int(x["i"]))][c] for x in texels
+                              if key != "sheen" or ours[(int(x["j"]), int(x["i"]))][c] <= 1.0])
+            expect(same < bound, f"MaterialX {key}: RMS {same:.3g} (its 64 samples)")
+            expect(transposed > 5 * same, f"MaterialX {key} transposed: RMS {transposed:.3g}")
     if failures:
         print(f"{len(failures)} comparison(s) failed")
         return 1

@@ -19,6 +19,7 @@
 #include "lutbake/lutbake.h"
 #include "lutbake/models/sheen.h"
 #include "lutbake/tables/storage.h"
+#include "lutbake/tables/table_definition.h"
 #include "support/bake_for_test.h"
 #include "support/cli_run.h"
 #include "support/csv.h"
@@ -58,8 +59,9 @@ const PresetFileCheck *FileCheck(const PresetCheck &check, const std::string &fi
 }
 
 TEST(Presets, EveryEngineOfTheIssueIsListed) {
-  for (const char *name : {"filament", "unreal", "unity-hdrp", "godot", "threejs",
-                           "gltf-sample-renderer", "learnopengl", "eevee", "cycles"})
+  for (const char *name :
+       {"filament", "unreal", "unity-hdrp", "godot", "threejs", "gltf-sample-renderer",
+        "learnopengl", "eevee", "cycles", "babylon", "ospray", "materialx"})
     EXPECT_NE(FindPreset(name), nullptr) << name;
   // The listing (`lutbake presets --json`) names every preset.
   const nlohmann::json listed = nlohmann::json::parse(PresetListJson());
@@ -567,8 +569,8 @@ TEST(Presets, HdrpCharlieMatchesBruteForce) {
 TEST(Presets, CheckReadsEveryPresetDirectoryBack) {
   // unity-hdrp is left out: its Charlie texture takes ~35 s to integrate
   // (twice here); HdrpCharlieMatchesBruteForce holds its values.
-  for (const char *name :
-       {"filament-mobile", "unreal", "godot", "threejs", "learnopengl", "eevee", "cycles"}) {
+  for (const char *name : {"filament-mobile", "unreal", "godot", "threejs", "learnopengl", "eevee",
+                           "cycles", "materialx"}) {
     const auto dir = test::Scratch(std::string("preset_check_") + name);
     // Cycles' glass averages take minutes: its 2D tables here, its glass
     // tables in CyclesGlassPresetJsonAndCheck.
@@ -616,6 +618,60 @@ TEST(Presets, ThreejsModuleIsThreejsFile) {
   ASSERT_EQ(read.values.size(), exact.values.size());
   for (size_t i = 0; i < exact.values.size(); ++i)
     ASSERT_EQ(read.values[i], StoredValue(exact.values[i], ValueType::kHalf)) << i;
+}
+
+// OSPRay's arrays: its texels (edges, cosThetaO clamped to 1e-6, alpha =
+// max(r^2, 0.001), OSPRay's eta the inverse of lutbake's) against the
+// tables evaluated here at those points, the index-matched slice (eta = 1:
+// no reflection, full transmission through the microfacets), and `check`
+// of the directory. Its generator, re-run, is in engine_generators_test.py.
+TEST(Presets, OsprayArraysHoldTheTablesAtOspraysTexels) {
+  const auto dir = test::Scratch("preset_ospray");
+  BakePreset("ospray", dir,
+             {"MicrofacetAlbedoTable_dir.ih", "MicrofacetAlbedoTable_avg.ih",
+              "MicrofacetDielectricAlbedoTable_dir.ih",
+              "MicrofacetDielectricReflectionAlbedoTable_dir.ih"});
+  const Table e = ReadSourceTable((dir / "MicrofacetAlbedoTable_dir.ih").string());
+  const Table glass = ReadSourceTable((dir / "MicrofacetDielectricAlbedoTable_dir.ih").string());
+  const Table spec =
+      ReadSourceTable((dir / "MicrofacetDielectricReflectionAlbedoTable_dir.ih").string());
+  ASSERT_EQ(e.values.size(), 32u * 32u);
+  ASSERT_EQ(glass.values.size(), 16u * 16u * 16u);
+  const auto roughnessOf = [](double r) { return std::sqrt(std::max(r * r, 0.001)); };
+  BakeSettings settings;
+  for (int j : {0, 3, 17, 31})
+    for (int i : {0, 1, 15, 31}) {
+      const double mu = std::max(i / 31.0, 1e-6);
+      const double exact = TableNamed("E").Evaluate(settings, mu, roughnessOf(j / 31.0)).value[0];
+      EXPECT_NEAR(e.values[static_cast<size_t>(j) * 32 + i], exact, 1e-7) << i << " " << j;
+    }
+  const double third = static_cast<double>(1.0f / 3.0f);
+  for (int k : {2, 9, 15})
+    for (int jEta : {0, 7, 15})
+      for (int i : {1, 8, 15}) {
+        const double ospraysEta = third + jEta / 15.0 * (1.0 - third);
+        const size_t at = (static_cast<size_t>(k) * 16 + jEta) * 16 + i;
+        const double r = roughnessOf(k / 15.0);
+        const double g =
+            TableNamed("glass_E").Evaluate3D(settings, i / 15.0, r, 1.0 / ospraysEta).value[0];
+        const double s =
+            TableNamed("spec_E").Evaluate3D(settings, i / 15.0, r, 1.0 / ospraysEta).value[0];
+        EXPECT_NEAR(glass.values[at], g, 1e-7) << i << " " << jEta << " " << k;
+        EXPECT_NEAR(spec.values[at], s, 1e-7) << i << " " << jEta << " " << k;
+        // Index matched: F = 0, nothing reflects; the microfacets still
+        // shadow the transmitted light: G2(o, -o) / G1(o) = (1 + Lambda) /
+        // (1 + 2 Lambda), 8 / 15 at the roughest grazing texel, 1 at mu = 1.
+        if (jEta == 15) {
+          EXPECT_EQ(spec.values[at], 0.0);
+          EXPECT_LE(glass.values[at], 1.0);
+          EXPECT_GT(glass.values[at], 0.5);
+          if (k == 15 && i == 1) {
+            EXPECT_NEAR(glass.values[at], 8.0 / 15.0, 1e-6);
+          }
+        }
+      }
+  const PresetCheck checked = CheckPresetDirectory(dir.string());
+  EXPECT_TRUE(checked.pass) << checked.json;
 }
 
 }  // namespace

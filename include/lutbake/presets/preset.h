@@ -35,7 +35,9 @@ namespace lutbake {
 //                   reflectance F0 is u^4, u = sqrt(|(ior - 1) / (ior + 1)|)
 //                   (Cycles' IOR axis); u = 1 is infinite, so such an axis
 //                   clamps q below.
-enum class PresetMapping { kLinear, kSquare, kOneMinusSquare, kIorOfF0Root4 };
+//   kLinearRange    q = lowest + u (highest - lowest): an axis that runs
+//                   linearly over [lowest, highest] (OSPRay's eta axes).
+enum class PresetMapping { kLinear, kSquare, kOneMinusSquare, kIorOfF0Root4, kLinearRange };
 // Where texel i of N lies in u:
 //   kCentres  u = (i + 0.5) / N   (sampled at uv by a linear filter)
 //   kEdges    u = i / (N - 1)     (N >= 2: a half-texel remap, a CPU lookup)
@@ -92,6 +94,7 @@ struct PresetModel {
   // The Charlie sheen channel (meaning "sheen_E"): its visibility and alpha.
   SheenVisibility sheenVisibility = SheenVisibility::kCharlie;
   PresetAlpha sheenAlpha = PresetAlpha::kLinear;
+  double sheenAlphaMin = 0.0;  // sheen_E at alpha = max(alpha, sheenAlphaMin)
 };
 
 // A channel: stored = scale * meaning + offset, meaning one of
@@ -107,17 +110,27 @@ struct PresetModel {
 //   "glass_E"   rough glass's directional albedo, reflection + transmission
 //               (table glass_E) at the texel's eta
 //   "glass_Eavg"  its cosine-weighted average over mu (table glass_Eavg)
+//   "spec_E", "spec_Eavg"  the same of the reflection alone (tables spec_E,
+//               spec_Eavg)
 //   "disney_diffuse"  Burley's diffuse albedo as Unity HDRP renormalises it:
 //               table burley_E / 1.03571 (preset.cpp, DisneyDiffuseAlbedo), at
 //               perceptual roughness
+//   "zeltner_a", "zeltner_b", "zeltner_R"  Zeltner et al.'s multiple-
+//               scattering sheen (OpenPBR's fuzz): its LTC entries a, b and
+//               reflectance R from the authors' published table
+//               (models/zeltner_sheen_ltc.h), at (mu, alpha = the roughness
+//               axis itself), bilinear between its entries as the authors'
+//               renderer reads it; not integrated by lutbake, so with no
+//               bound of their own (a texel's bound is its storage's only)
 //   "one", "zero"  constants (a channel the engine does not read)
-// A format that holds only [0, 1] (PNG) takes min(stored, clampMax); the
+// A format that holds only [0, 1] (PNG) takes min(stored, clampMax), and
+// one that holds no negative value (RGBD) max(stored, clampMin); the
 // texel's bound then adds what the clamp moved it by, so that it still
 // covers the value as stored.
 struct PresetChannel {
   std::string meaning;
   double scale = 1.0, offset = 0.0;
-  double clampMax = 1e300;
+  double clampMin = -1e300, clampMax = 1e300;
 };
 
 // One texture (or embedded array) of a preset.

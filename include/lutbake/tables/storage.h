@@ -20,9 +20,13 @@ namespace lutbake {
 // q / (2^b - 1) with q = floor(v (2^b - 1) + 0.5): rounded to nearest, at
 // most half a step 0.5 / (2^b - 1) from v for v in [0, 1] (the writers
 // refuse values outside [0, 1]).
-enum class ValueType { kFloat32, kFloat64, kHalf, kUnorm8, kUnorm16 };
+// kRgbd8: Babylon.js's RGBD (rgbd.h), the channels of a texel sharing one
+// 8-bit divisor: a value's storage depends on its texel's other channels,
+// so StoredBounds encodes texel by texel (StoredValue alone encodes a
+// one-channel texel).
+enum class ValueType { kFloat32, kFloat64, kHalf, kUnorm8, kUnorm16, kRgbd8 };
 
-// "float32", "float64", "half", "unorm8", "unorm16".
+// "float32", "float64", "half", "unorm8", "unorm16", "rgbd8".
 const char *ToString(ValueType type);
 
 // The value as the storage holds it (half: rounded to float, then to
