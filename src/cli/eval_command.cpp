@@ -73,6 +73,7 @@ void PrintPoint(const EvalResult &result, const EvalPoint &p) {
   for (double error : p.errors) n += std::snprintf(text + n, sizeof text - n, " %.2g", error);
   std::cout << text << "  (" << p.estimator;
   if (p.samples) std::cout << ", " << p.samples << " samples";
+  for (const auto &[key, value] : p.fitErrors) std::cout << ", " << key << " " << value;
   std::cout << ")\n";
 }
 
@@ -82,8 +83,7 @@ void SetupEvalCommand(CLI::App &app, EvalOptions &o) {
   app.add_option("--table", o.table, "The table to evaluate")
       ->required()
       ->check(OneOf(TableNames()));
-  // Each option's widest range here; each table narrows it (its
-  // PointCoordinate), and says so.
+  // Each option's widest range here; each table narrows it (PointCoordinate), and says so.
   app.add_option("--mu", o.mu, "E, dfg: view cosines, comma-separated (0 = the grazing limit)")
       ->type_name("LIST")
       ->check(RealList({0.0, 1.0, "comma-separated numbers in [0, 1]"}));

@@ -14,6 +14,7 @@ const std::vector<const Preset *> &AllPresets() {
       &UnityHdrpPreset(),
       &GodotPreset(),
       &ThreejsPreset(),
+      &ThreejsLtcPreset(),
       &GltfSampleRendererPreset(),
       &LearnOpenGlPreset(),
       &EeveePreset(),

@@ -109,6 +109,15 @@ struct PresetModel {
 //   "disney_diffuse"  Burley's diffuse albedo as Unity HDRP renormalises it:
 //               table burley_E / 1.03571 (preset.cpp, DisneyDiffuseAlbedo), at
 //               perceptual roughness
+//   "ltc_m00", "ltc_m20", "ltc_m02", "ltc_m22"  the entries of M^-1 of the
+//               linearly transformed cosine of the GGX lobe (table ltc_ggx's
+//               channels; models/ltc.h), fitted over the texture's whole
+//               (mu, roughness) grid at once (integrators/ltc_fit.h,
+//               FitLtcGrid); exact Smith forms only
+//   "clipped_sphere"  ltc_code's horizon-clipped sphere (LTC_2.w): the form
+//               factor of a spherical cap, clipped at the horizon, over its
+//               unclipped one |F|, at z = 2u - 1 (the cap's axis . n) and
+//               |F| = v, u and v the texel's own texture coordinates
 //   "one", "zero"  constants (a channel the engine does not read)
 // A format that holds only [0, 1] (PNG) takes min(stored, clampMax); the
 // texel's bound then adds what the clamp moved it by, so that it still
