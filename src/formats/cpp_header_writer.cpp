@@ -331,8 +331,8 @@ class CppHeaderWriter final : public TableWriter {
                "))";
       };
       if (table.channels >= 2) {
-        h << "inline std::array<float, " << table.channels << "> lookup_" << name << "(float "
-          << px << ", float " << py << ", float " << pz << ") {\n"
+        h << "inline std::array<float, " << table.channels << "> lookup_" << name << "(float " << px
+          << ", float " << py << ", float " << pz << ") {\n"
           << body << "  return {" << sample(0);
         for (int c = 1; c < table.channels; ++c) h << ",\n          " << sample(c);
         h << "};\n}\n\n";

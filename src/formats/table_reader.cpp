@@ -247,8 +247,9 @@ Table ReadExrTable(const std::string &path) {
       // EXR keeps channels sorted by name, so the order is the definition's.
       table.channelNames = named;
     else
-      throw IoError(path + ": no Y channel, no R, G channels and not the channels of the table "
-                           "its metadata names");
+      throw IoError(path +
+                    ": no Y channel, no R, G channels and not the channels of the table "
+                    "its metadata names");
     table.channels = static_cast<int>(table.channelNames.size());
     ShapeFromMetadata(path, width, height, &table);
     std::vector<float> pixels(static_cast<size_t>(width) * height * table.channels);

@@ -134,9 +134,8 @@ class ThreejsLtcWriter : public TableWriter {
     out << "\t\tLTC_FLOAT_1.needsUpdate = true;\n\t\tLTC_FLOAT_2.needsUpdate = true;\n\n";
     for (int k = 1; k <= 2; ++k)
       out << "\t\tconst ltc_half_" << k << " = new Uint16Array( LTC_MAT_" << k
-          << ".length );\n\t\tLTC_MAT_" << k
-          << ".forEach( function ( x, index ) {\n\t\t\tltc_half_" << k
-          << "[ index ] = DataUtils.toHalfFloat( x );\n\t\t} );\n";
+          << ".length );\n\t\tLTC_MAT_" << k << ".forEach( function ( x, index ) {\n\t\t\tltc_half_"
+          << k << "[ index ] = DataUtils.toHalfFloat( x );\n\t\t} );\n";
     for (int k = 1; k <= 2; ++k)
       out << "\t\tconst LTC_HALF_" << k << " = new DataTexture( ltc_half_" << k << ", " << size
           << ", RGBAFormat, HalfFloatType, UVMapping, ClampToEdgeWrapping, ClampToEdgeWrapping, "

@@ -491,8 +491,8 @@ LtcTexel FitLtcPoint(const std::function<LtcLobe(double perceptualRoughness)> &l
                      const std::vector<double> &gridRoughness, const LtcFitSettings &settings) {
   double top = perceptualRoughness;
   for (double r : gridRoughness) top = std::max(top, r);
-  const bool above = std::none_of(gridRoughness.begin(), gridRoughness.end(),
-                                  [&](double r) { return r == top; });
+  const bool above =
+      std::none_of(gridRoughness.begin(), gridRoughness.end(), [&](double r) { return r == top; });
   // Above every node: the path of the top node, then one step up.
   const double columnR = above && !gridRoughness.empty()
                              ? *std::max_element(gridRoughness.begin(), gridRoughness.end())

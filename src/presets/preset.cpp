@@ -226,7 +226,7 @@ std::vector<LtcTexel> FitPresetLtc(const PresetTexture &texture, int muAxis, int
   for (int i = 0; i < ma.count; ++i) mu.push_back(ma.Quantity(i));
   for (int j = 0; j < ra.count; ++j) roughness.push_back(ra.Quantity(j));
   const SmithForm smith = model.visibility == PresetVisibility::kSeparable ? SmithForm::kSeparable
-                                                                            : SmithForm::kCorrelated;
+                                                                           : SmithForm::kCorrelated;
   LtcFitSettings settings;
   settings.moments = false;  // the channels "E" and "B" integrate them
   return FitLtcGrid(
@@ -385,10 +385,9 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
                                                        : m.m22;
               } else if (channel.meaning == "clipped_sphere") {
                 const double u = texture.axes[0].Coordinate(axisTexel(texture.axes[0], ix));
-                const double v =
-                    texture.axes.size() > 1
-                        ? texture.axes[1].Coordinate(axisTexel(texture.axes[1], iy))
-                        : 0.0;
+                const double v = texture.axes.size() > 1
+                                     ? texture.axes[1].Coordinate(axisTexel(texture.axes[1], iy))
+                                     : 0.0;
                 value = ClippedSphere(2.0 * u - 1.0, v);
               } else {
                 for (const auto &[meaning, integral] : kSingle)

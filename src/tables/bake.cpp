@@ -117,12 +117,14 @@ Table BakeTableOn(const TableDefinition &definition, const BakeSettings &s, cons
   std::vector<uint64_t> texelSamples(texels, 0), texelEvaluations(texels, 0);
   std::vector<uint8_t> texelQuadrature(texels, 0);
   std::atomic<size_t> done{0};
+  // A fitted table bakes all its texels at once (table_definition.h); the
+  // loop below then has none to run.
   uint64_t wholeEvaluations = 0;
   if (definition.BakedWhole()) {
     wholeEvaluations = definition.BakeWhole(s, &table);
     if (progress) progress(1.0);
-  } else
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, texels),
+  }
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, definition.BakedWhole() ? 0 : texels),
                     [&](const tbb::blocked_range<size_t> &r) {
                       for (size_t k = r.begin(); k != r.end(); ++k) {
                         // Thrown out of parallel_for, which cancels the other tasks.

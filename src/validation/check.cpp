@@ -1137,8 +1137,8 @@ class Checker {
     const std::string subject = std::string(t.def->Name()) + "+" + rel.channelIs + suffix_;
     if (!SameModel(t, *e, subject, "channel")) return;
     const int c = rel.channelIsChannel;
-    const std::string claim = t.def->ChannelMeanings()[static_cast<size_t>(c)] + " = " +
-                              e->def->ChannelMeanings()[0];
+    const std::string claim =
+        t.def->ChannelMeanings()[static_cast<size_t>(c)] + " = " + e->def->ChannelMeanings()[0];
     const Table &te = e->table, &tt = t.table;
     Worst worst;
     for (int y = 0; y < te.height(); ++y)
@@ -1250,7 +1250,8 @@ class Checker {
       const size_t at = summary ? summary->find(names[k] + " mean ") : std::string::npos;
       if (at != std::string::npos) {
         const size_t m = summary->find(" max ", at);
-        const double stated = m == std::string::npos ? NAN : std::strtod(summary->c_str() + m + 5, nullptr);
+        const double stated =
+            m == std::string::npos ? NAN : std::strtod(summary->c_str() + m + 5, nullptr);
         if (!(highest <= stated * (1.0 + 1e-5) + 1e-12))
           worst.Note(highest - stated, 0.0, {{names[k] + " max", highest}});
       }
@@ -1264,8 +1265,7 @@ class Checker {
               Short(worst.excessDeviation) + " at " + Where(worst.atExcess) + ". " + detail,
           worst.excessDeviation, worst.excessAllowed, worst.atExcess);
     else
-      Add(name, "fit errors",
-          summary || map ? CheckStatus::kPass : CheckStatus::kFail,
+      Add(name, "fit errors", summary || map ? CheckStatus::kPass : CheckStatus::kFail,
           "recomputed for the " + std::to_string(texels) + " stored texels, as " + against +
               " state: " + detail);
     // Jumps: along every row and column, the step between neighbours in the
@@ -1295,9 +1295,9 @@ class Checker {
           const int x = axis == 0 ? i : line, y = axis == 0 ? line : i;
           const double x2 = axis == 0 ? table.x.TexelCenter(x + 1) : table.x.TexelCenter(x);
           const double y2 = axis == 0 ? table.y.TexelCenter(y) : table.y.TexelCenter(y + 1);
-          jump.Note(step[i] / beside, kJumpRatio,
-                    At(table, 0.5 * (table.x.TexelCenter(x) + x2),
-                       0.5 * (table.y.TexelCenter(y) + y2)));
+          jump.Note(
+              step[i] / beside, kJumpRatio,
+              At(table, 0.5 * (table.x.TexelCenter(x) + x2), 0.5 * (table.y.TexelCenter(y) + y2)));
           ++steps;
         }
       }

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "lutbake/formats/output_transaction.h"
 #include "lutbake/formats/atomic_output.h"
+#include "lutbake/formats/output_transaction.h"
 #include "lutbake/tables/table_definition.h"
 #include "support/cli_run.h"
 

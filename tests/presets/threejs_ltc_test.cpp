@@ -54,7 +54,8 @@ double BruteClippedSphere(double z, double len) {
     const double t = (a + 0.5) / n * sigma;
     for (int b = 0; b < n; ++b) {
       const double phi = (b + 0.5) / n * 2.0 * kPi;
-      const double wz = std::cos(omega) * std::cos(t) - std::sin(omega) * std::sin(t) * std::cos(phi);
+      const double wz =
+          std::cos(omega) * std::cos(t) - std::sin(omega) * std::sin(t) * std::cos(phi);
       sum += std::max(wz, 0.0) * std::sin(t) * (sigma / n) * (2.0 * kPi / n);
     }
   }
@@ -126,7 +127,8 @@ TEST_F(ThreejsLtc, LayoutAxesAndValues) {
       ++measured;
     }
   meanLobe /= measured;
-  // Measured: mean 0.08, max 0.55 (grazing, rough).
+  // Over all 4096 texels the lobe error measures mean 0.070, max 0.68 (at a
+  // grazing view; tools/measure_ltc.cpp --shipped).
   EXPECT_LT(meanLobe, 0.1);
   EXPECT_LT(worstLobe, 0.7);
 }
@@ -136,7 +138,8 @@ TEST_F(ThreejsLtc, LayoutAxesAndValues) {
 TEST_F(ThreejsLtc, ClippedSphereAgainstBruteForce) {
   const std::vector<double> t2 = JsArray(*text_, "LTC_MAT_2");
   ASSERT_EQ(t2.size(), 64u * 64u * 4u);
-  for (const auto &[i, j] : std::vector<std::pair<int, int>>{{32, 32}, {10, 40}, {50, 20}, {63, 40}, {63, 63}, {5, 10}, {40, 2}}) {
+  for (const auto &[i, j] : std::vector<std::pair<int, int>>{
+           {32, 32}, {10, 40}, {50, 20}, {63, 40}, {63, 63}, {5, 10}, {40, 2}}) {
     const double z = 2.0 * j / 63.0 - 1.0, len = i / 63.0;
     const double w = t2[(static_cast<size_t>(i) * 64 + j) * 4 + 3];
     EXPECT_NEAR(w, BruteClippedSphere(z, len), 2e-6) << i << ", " << j;
