@@ -7,6 +7,7 @@
 namespace lutbake {
 
 const std::vector<const Preset *> &AllPresets() {
+  // clang-format off
   static const std::vector<const Preset *> presets = {
       &FilamentPreset(),
       &FilamentMobilePreset(),
@@ -20,6 +21,7 @@ const std::vector<const Preset *> &AllPresets() {
       &EeveePreset(),
       &CyclesPreset(),
   };
+  // clang-format on
   return presets;
 }
 

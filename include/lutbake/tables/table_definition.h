@@ -280,10 +280,8 @@ class TableDefinition {
   // The same measures at a point for the channel values v (what Evaluate
   // gave, or a texel as stored: eval prints them beside the values, check
   // recomputes them): {"lobeError", e}, ...; none for an integrated table.
-  virtual std::vector<std::pair<std::string, double>> PointFitErrors(const BakeSettings &,
-                                                                     double /*x*/, double /*y*/,
-                                                                     const PointValue & /*v*/)
-      const {
+  virtual std::vector<std::pair<std::string, double>> PointFitErrors(
+      const BakeSettings &, double /*x*/, double /*y*/, const PointValue & /*v*/) const {
     return {};
   }
   // The fit's own parameters of a texel's channels, in which the fit varies
