@@ -46,13 +46,14 @@ every_table() {
   ./build/lutbake bake --out "$scratch/glass" --tables glass_E,glass_Eavg --size 8 --eta-size 3 >/dev/null 2>&1
   ./build/lutbake bake --out "$scratch/default" >/dev/null 2>&1
   local -a names=(E Eavg Favg dfg f82 sheen_E sheen_Eavg glass_E glass_Eavg spec_E spec_Eavg
-                  oren_nayar_E oren_nayar_full_E "default set (E,Eavg,Favg,dfg)" "preset cycles"
+                  oren_nayar_E oren_nayar_full_E ltc_ggx "default set (E,Eavg,Favg,dfg)"
+                  "preset cycles" "preset threejs-ltc"
                   "check default set" "check glass_E,glass_Eavg (8 x 8 x 3)")
   for name in "${names[@]}"; do
     if [ -n "${ONLY:-}" ] && ! [[ "$name" =~ $ONLY ]]; then continue; fi
     case "$name" in
       "default set"*) cmd=(./build/lutbake bake --out "$scratch/t") ;;
-      "preset cycles") cmd=(./build/lutbake bake --out "$scratch/t" --preset cycles) ;;
+      "preset "*) cmd=(./build/lutbake bake --out "$scratch/t" --preset "${name#preset }") ;;
       "check default set") cmd=(./build/lutbake check "$scratch/default") ;;
       "check glass"*) cmd=(./build/lutbake check "$scratch/glass") ;;
       *) cmd=(./build/lutbake bake --out "$scratch/t" --tables "$name") ;;

@@ -4,7 +4,16 @@
 //
 //   lutbake_measure_ltc [--threads N] [--leakage-weight W] [--no-errors]
 //                       [--sheen charlie|ashikhmin [--alpha-r]]
-//                       [RectAreaLightTexturesLib.js]
+//                       [--shipped OURS.js] [--points N] [RectAreaLightTexturesLib.js]
+//
+// --points N: at N pseudo-random points (mu, r) (a fixed sequence), table
+// ltc_ggx as `lutbake eval` fits it (FitLtcPoint along the path of the
+// default 64 x 64 texel-centre grid) against ltc_code's table sampled as
+// three.js samples it, both measured alike; nothing else.
+//
+// --shipped measures lutbake's table as the threejs-ltc preset ships it
+// (`lutbake bake --preset threejs-ltc`: its LTC_MAT_1 / LTC_MAT_2, float32,
+// sampled as three.js samples them) in place of the table fitted here.
 //
 // --sheen fits the sheen lobe instead (alpha = r^2, or r with --alpha-r); it
 // has no published table to compare with.
@@ -108,7 +117,8 @@ int main(int argc, char **argv) {
   int threads = 0;
   bool errors = true;
   LtcFitSettings settings;
-  std::string jsPath;
+  std::string jsPath, shippedPath;
+  int points = 0;
   bool sheen = false, alphaIsR = false;
   SheenVisibility visibility = SheenVisibility::kCharlie;
   for (int k = 1; k < argc; ++k) {
@@ -124,6 +134,10 @@ int main(int argc, char **argv) {
       }
     } else if (!std::strcmp(argv[k], "--alpha-r")) {
       alphaIsR = true;
+    } else if (!std::strcmp(argv[k], "--points") && k + 1 < argc) {
+      points = std::atoi(argv[++k]);
+    } else if (!std::strcmp(argv[k], "--shipped") && k + 1 < argc) {
+      shippedPath = argv[++k];
     } else if (!std::strcmp(argv[k], "--no-errors")) {
       errors = false;
     } else {
@@ -135,15 +149,63 @@ int main(int argc, char **argv) {
     control = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                     threads);
   const int size = 64;
+  if (points > 0) {
+    std::ifstream in(jsPath);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::vector<float> mat1 = ReadArray(buffer.str(), "LTC_MAT_1"),
+                             mat2 = ReadArray(buffer.str(), "LTC_MAT_2");
+    if (mat1.size() != 64 * 64 * 4 || mat2.size() != 64 * 64 * 4) {
+      std::fprintf(stderr, "--points needs ltc_code's table (three.js's module)\n");
+      return 1;
+    }
+    std::vector<double> centres;
+    for (int i = 0; i < size; ++i) centres.push_back((i + 0.5) / size);
+    std::vector<double> mus(points), rs(points);
+    uint64_t state = 0x9e3779b97f4a7c15ull;
+    const auto next = [&] {
+      state = state * 6364136223846793005ull + 1442695040888963407ull;
+      return static_cast<double>(state >> 11) * 0x1p-53;
+    };
+    for (int k = 0; k < points; ++k) mus[k] = next(), rs[k] = next();
+    std::vector<LtcErrors> ours(points), theirs(points);
+    LtcFitSettings fit = settings;
+    fit.moments = false;
+    const auto lobeAt = [](double r) {
+      return MicrofacetLtcLobe(Ndf{NdfKind::kGgx, r * r}, SmithForm::kCorrelated);
+    };
+    tbb::parallel_for(0, points, [&](int k) {
+      const double mu = mus[k], r = rs[k];
+      const LtcLobe lobe = lobeAt(r);
+      double magnitude = 0, fresnel = 0;
+      lobe.moments(mu, &magnitude, &fresnel);
+      const std::vector<double> refs = RectangleLobeIntegrals(lobe, mu, 1);
+      const LtcTexel t = FitLtcPoint(lobeAt, mu, r, centres, centres, fit);
+      ours[k] = MeasureLtcErrors(lobe, mu, magnitude, t.minv, refs);
+      const double x = r * (size - 1), y = std::sqrt(1.0 - mu) * (size - 1);
+      const LtcMatrix m{Bilinear(mat1, size, x, y, 0), Bilinear(mat1, size, x, y, 1),
+                        Bilinear(mat1, size, x, y, 2), Bilinear(mat1, size, x, y, 3)};
+      theirs[k] = MeasureLtcErrors(lobe, mu, magnitude, Bilinear(mat2, size, x, y, 0), m, refs);
+    });
+    const Summary so = Summarise(ours), st = Summarise(theirs);
+    Print("lutbake eval (fitted at the point)", so);
+    Print("ltc_code (as three.js samples it)", st);
+    double worst = -1e300;
+    for (int k = 0; k < points; ++k) worst = std::max(worst, ours[k].lobe - theirs[k].lobe);
+    std::printf("%d points: ratios lobe %.3f, polygon %.3f, leakage %.3f; worst lobe excess %.5f\n",
+                points, so.meanLobe / st.meanLobe, so.meanPolygon / st.meanPolygon,
+                so.meanLeakage / st.meanLeakage, worst);
+    return 0;
+  }
   const auto t0 = std::chrono::steady_clock::now();
-  const LtcTable table =
+  const LtcTable fitted =
       sheen ? FitSheenLtcTable(visibility, !alphaIsR, size, settings, false)
             : FitGgxLtcTable(NdfKind::kGgx, SmithForm::kCorrelated, size, settings, false);
   const double fitSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("fit 64x64 %s (leakage weight %g): %.2f s, %lld objective evaluations\n",
               sheen ? (alphaIsR ? "ltc_sheen, alpha = r" : "ltc_sheen, alpha = r^2") : "ltc_ggx",
-              settings.leakageWeight, fitSeconds, static_cast<long long>(table.evaluations));
+              settings.leakageWeight, fitSeconds, static_cast<long long>(fitted.evaluations));
   auto lobeAt = [&](double r) {
     return sheen ? SheenLtcLobe(visibility, alphaIsR ? r : r * r)
                  : MicrofacetLtcLobe(Ndf{NdfKind::kGgx, r * r}, SmithForm::kCorrelated);
@@ -151,9 +213,9 @@ int main(int argc, char **argv) {
   double minDet = 1e300, maxMagnitudeError = 0, maxFresnelError = 0;
   bool finite = true;
   for (int k = 0; k < size * size; ++k) {
-    const LtcMatrix m = table.Matrix(k);
+    const LtcMatrix m = fitted.Matrix(k);
     minDet = std::min(minDet, m.Determinant());
-    for (double v : {m.m00, m.m20, m.m02, m.m22, table.magnitude[k], table.fresnel[k]})
+    for (double v : {m.m00, m.m20, m.m02, m.m22, fitted.magnitude[k], fitted.fresnel[k]})
       finite = finite && std::isfinite(v);
   }
   // magnitude and fresnel against the albedo quadrature at tolerance 1e-12.
@@ -163,8 +225,8 @@ int main(int argc, char **argv) {
       const SplitSumQuadrature q = IntegrateSplitSumQuadrature(
           Ndf{NdfKind::kGgx, r * r}, SmithForm::kCorrelated, LtcTableMu(i, size), 1e-12, true);
       const size_t k = static_cast<size_t>(i) * size + j;
-      maxMagnitudeError = std::max(maxMagnitudeError, std::fabs(table.magnitude[k] - q.A - q.B));
-      maxFresnelError = std::max(maxFresnelError, std::fabs(table.fresnel[k] - q.B));
+      maxMagnitudeError = std::max(maxMagnitudeError, std::fabs(fitted.magnitude[k] - q.A - q.B));
+      maxFresnelError = std::max(maxFresnelError, std::fabs(fitted.fresnel[k] - q.B));
     }
   std::printf("min det M^-1 %.3g, all finite %s", minDet, finite ? "yes" : "NO");
   if (!sheen)
@@ -184,6 +246,28 @@ int main(int argc, char **argv) {
       std::fprintf(stderr, "%s: LTC_MAT_1/2 not found or not 64x64x4\n", jsPath.c_str());
       return 1;
     }
+  }
+  // lutbake's shipped module: its texels replace the table fitted above.
+  LtcTable table = fitted;
+  if (!shippedPath.empty()) {
+    std::ifstream in(shippedPath);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::vector<float> s1 = ReadArray(buffer.str(), "LTC_MAT_1"),
+                             s2 = ReadArray(buffer.str(), "LTC_MAT_2");
+    if (s1.size() != 64 * 64 * 4 || s2.size() != 64 * 64 * 4) {
+      std::fprintf(stderr, "%s: LTC_MAT_1/2 not found or not 64x64x4\n", shippedPath.c_str());
+      return 1;
+    }
+    for (size_t k = 0; k < s1.size() / 4; ++k) {
+      table.m00[k] = s1[k * 4];
+      table.m20[k] = s1[k * 4 + 1];
+      table.m02[k] = s1[k * 4 + 2];
+      table.m22[k] = s1[k * 4 + 3];
+      table.magnitude[k] = s2[k * 4];
+      table.fresnel[k] = s2[k * 4 + 1];
+    }
+    std::printf("measuring the shipped module %s\n", shippedPath.c_str());
   }
   const size_t count = static_cast<size_t>(size) * size;
   std::vector<LtcErrors> ours(count), theirs(count), theirsExact(count);

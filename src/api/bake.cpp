@@ -303,6 +303,17 @@ void BakeJobInto(Run &run, const BakeJob &job) {
     run.result.files.push_back({path, job.name, "error-map", 0.0, 0.0});
     baked.files.push_back(path);
   }
+  // A fitted table's per-texel measures (ltc_ggx: lobe error, polygon
+  // error, leakage), always: they are what its values are worth.
+  if (!table.fitMaps.empty()) {
+    if (r.cancellation) r.cancellation->ThrowIfCancelled();
+    const std::string path =
+        run.output.Write(job.name + ".fit.exr", [&](const std::string &temporary) {
+          MakeExrWriter()->Write(FitMapOf(table), temporary, run.writeOptions);
+        });
+    run.result.files.push_back({path, job.name, "fit-map", 0.0, 0.0});
+    baked.files.push_back(path);
+  }
   // The bound as the float32 files state it (rounding included).
   const BoundSummary stored = SummarizeStoredBounds(table, ValueType::kFloat32);
   baked.name = job.name;

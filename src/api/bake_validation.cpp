@@ -7,6 +7,7 @@
 #include "bake_internal.h"
 #include "lutbake/api/names.h"
 #include "lutbake/core/error.h"
+#include "lutbake/formats/format.h"
 #include "lutbake/tables/bake.h"
 #include "lutbake/tables/table_definition.h"
 
@@ -159,6 +160,21 @@ void ValidateApplicability(const BakeRequest &r) {
                                                     {"seed", s.seed.has_value()}};
   for (const auto &[option, given] : sampling)
     if (given) RequireTableUsing(asked, asText, option, "", IsSampled);
+  // A table of more than two channels (ltc_ggx) goes only into the formats
+  // that hold them, and has no shader lookup.
+  for (const TableDefinition *table : asked) {
+    std::vector<std::string> holding;
+    for (const TableFormat &f : AllFormats())
+      if (f.bakeFormat && f.maxChannels >= table->Channels()) holding.push_back(f.name);
+    for (const std::string &name : r.formats.value_or(DefaultFormats()))
+      if (const TableFormat *f = FindFormat(name); f && f->maxChannels < table->Channels())
+        throw UsageError("--format " + name + " holds at most " + std::to_string(f->maxChannels) +
+                         " channels; " + table->Name() + " has " +
+                         std::to_string(table->Channels()) + ": use " + JoinList(holding));
+    if (!r.shaders.empty() && table->Channels() > 2)
+      throw UsageError("--shader does not apply to " + std::string(table->Name()) + " (" +
+                       std::to_string(table->Channels()) + " channels)");
+  }
 }
 
 }  // namespace lutbake

@@ -205,6 +205,7 @@ EvalResult Evaluate(const EvalRequest &r) {
       for (double x : xs) at.push_back({x, y, z});
   const bool threeD = coordinates.size() > 2;
   std::vector<PointValue> pointValues(at.size());
+  std::vector<std::vector<std::pair<std::string, double>>> fitErrors(at.size());
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
                                   static_cast<size_t>(ThreadCount(r.threads)));
   try {
@@ -212,6 +213,7 @@ EvalResult Evaluate(const EvalRequest &r) {
       const auto &[x, y, z] = at[i];
       pointValues[i] =
           threeD ? table.Evaluate3D(settings, x, y, z) : table.Evaluate(settings, x, y);
+      if (!threeD) fitErrors[i] = table.PointFitErrors(settings, x, y, pointValues[i]);
     });
   } catch (const std::domain_error &e) {
     throw UsageError(std::string(e.what()) + " (--table " + name + ")");
@@ -227,6 +229,7 @@ EvalResult Evaluate(const EvalRequest &r) {
     p.errors.assign(v.error, v.error + channels);
     p.estimator = EstimatorUsed(v, settings);
     p.samples = v.samples;
+    p.fitErrors = std::move(fitErrors[i]);
     result.points.push_back(std::move(p));
   }
   return result;
@@ -238,13 +241,14 @@ std::string EvalResult::JsonLine(size_t i) const {
   line["table"] = table;
   for (const auto &[option, value] : labels) line[option] = value;
   for (size_t c = 0; c < coordinateNames.size(); ++c) line[coordinateNames[c]] = p.coordinates[c];
-  if (p.values.size() == 2) {
-    line["value"] = {p.values[0], p.values[1]};
-    line["error"] = {p.errors[0], p.errors[1]};
+  if (p.values.size() >= 2) {
+    line["value"] = p.values;
+    line["error"] = p.errors;
   } else {
     line["value"] = p.values[0];
     line["error"] = p.errors[0];
   }
+  for (const auto &[key, value] : p.fitErrors) line[key] = value;
   line["estimator"] = p.estimator;
   line["samples"] = p.samples;
   return line.dump();

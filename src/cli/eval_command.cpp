@@ -64,6 +64,7 @@ void PrintPoint(const EvalResult &result, const EvalPoint &p) {
   for (double error : p.errors) n += std::snprintf(text + n, sizeof text - n, " %.2g", error);
   std::cout << text << "  (" << p.estimator;
   if (p.samples) std::cout << ", " << p.samples << " samples";
+  for (const auto &[key, value] : p.fitErrors) std::cout << ", " << key << " " << value;
   std::cout << ")\n";
 }
 

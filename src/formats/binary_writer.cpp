@@ -149,7 +149,8 @@ Table ReadBinaryTable(const std::string &path) {
   if (threeD ? dims != 3 : (dims != 1 && dims != 2))
     throw IoError(path + (threeD ? ": a version 2 file has 3 dimensions"
                                  : ": dimensions must be 1 or 2 (version 1)"));
-  if (channels != 1 && channels != 2) throw IoError(path + ": channels must be 1 or 2");
+  if (channels < 1 || channels > static_cast<uint32_t>(kMaxTableChannels))
+    throw IoError(path + ": channels must be 1 to " + std::to_string(kMaxTableChannels));
   if (valueType != kBinaryFloat32 && valueType != kBinaryFloat64)
     throw IoError(path + ": value type must be 1 (float32) or 2 (float64)");
   const size_t valueBytes = valueType == kBinaryFloat64 ? 8 : 4;
@@ -209,6 +210,13 @@ Table ReadBinaryTable(const std::string &path) {
       table.metadata.emplace_back(line.substr(0, eq), line.substr(eq + 1));
   }
   if (const std::string *name = table.FindMetadata("table")) table.definition = FindTable(*name);
+  // More than two channels (ltc_ggx): named by the definition.
+  if (channels > 2) {
+    if (!table.definition || table.definition->Channels() != static_cast<int>(channels))
+      throw IoError(path + ": " + std::to_string(channels) +
+                    " channels, but the metadata names no table that has them");
+    table.channelNames = table.definition->ChannelNames();
+  }
   const size_t count = static_cast<size_t>(width) * height * table.z.count * channels;
   const size_t blocks = (flags & 1u) ? 2 : 1;
   if (in.size() != dataOffset + blocks * valueBytes * count)
@@ -229,7 +237,7 @@ Table ReadBinaryTable(const std::string &path) {
 
 std::vector<TableFormat> BinaryFormats() {
   return {{"bin", ".bin", [](const WriteOptions &o) { return o.binaryValues; }, MakeBinaryWriter,
-           ReadBinaryTable, true}};
+           ReadBinaryTable, true, false, kMaxTableChannels}};
 }
 
 }  // namespace lutbake

@@ -330,19 +330,24 @@ class CppHeaderWriter final : public TableWriter {
         return "static_cast<float>(" + t + "Sample3(x0, wx, y0, wy, z0, wz, " + std::to_string(c) +
                "))";
       };
-      if (table.channels == 2)
-        h << "inline std::array<float, 2> lookup_" << name << "(float " << px << ", float " << py
-          << ", float " << pz << ") {\n"
-          << body << "  return {" << sample(0) << ",\n          " << sample(1) << "};\n}\n\n";
-      else
+      if (table.channels >= 2) {
+        h << "inline std::array<float, " << table.channels << "> lookup_" << name << "(float " << px
+          << ", float " << py << ", float " << pz << ") {\n"
+          << body << "  return {" << sample(0);
+        for (int c = 1; c < table.channels; ++c) h << ",\n          " << sample(c);
+        h << "};\n}\n\n";
+      } else {
         h << "inline float lookup_" << name << "(float " << px << ", float " << py << ", float "
           << pz << ") {\n"
           << body << "  return " << sample(0) << ";\n}\n\n";
-    } else if (table.channels == 2) {
-      h << "inline std::array<float, 2> lookup_" << name << "(float " << px << ", float " << py
-        << ") {\n"
-        << body << "  return {static_cast<float>(" << t << "Sample(x0, wx, y0, wy, 0)),\n"
-        << "          static_cast<float>(" << t << "Sample(x0, wx, y0, wy, 1))};\n}\n\n";
+      }
+    } else if (table.channels >= 2) {
+      h << "inline std::array<float, " << table.channels << "> lookup_" << name << "(float " << px
+        << ", float " << py << ") {\n"
+        << body << "  return {static_cast<float>(" << t << "Sample(x0, wx, y0, wy, 0))";
+      for (int c = 1; c < table.channels; ++c)
+        h << ",\n          static_cast<float>(" << t << "Sample(x0, wx, y0, wy, " << c << "))";
+      h << "};\n}\n\n";
     } else {
       h << "inline float lookup_" << name << "(float " << px
         << (table.is2D() ? ", float " + py : std::string()) << ") {\n"
@@ -449,7 +454,9 @@ std::vector<TableFormat> CppHeaderFormats() {
            },
            MakeCppHeaderWriter,
            {},
-           true}};
+           true,
+           false,
+           kMaxTableChannels}};
 }
 
 }  // namespace lutbake

@@ -63,7 +63,8 @@ class ExrWriter final : public TableWriter {
 std::unique_ptr<TableWriter> MakeExrWriter() { return std::make_unique<ExrWriter>(); }
 
 std::vector<TableFormat> ExrFormats() {
-  return {{"exr", ".exr", FixedStorage(ValueType::kFloat32), MakeExrWriter, ReadExrTable, true}};
+  return {{"exr", ".exr", FixedStorage(ValueType::kFloat32), MakeExrWriter, ReadExrTable, true,
+           false, kMaxTableChannels}};
 }
 
 }  // namespace lutbake

@@ -9,6 +9,7 @@
 #include <ImfStdIO.h>
 #include <ImfStringAttribute.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -19,6 +20,29 @@
 #include "lutbake/tables/table_definition.h"
 
 namespace lutbake {
+
+namespace {
+
+// "T" of "T", "T.err" or "T.fit".
+std::string PlainTableName(const std::string &name) {
+  for (const char *suffix : {".err", ".fit"})
+    if (name.size() > 4 && name.compare(name.size() - 4, 4, suffix) == 0)
+      return name.substr(0, name.size() - 4);
+  return name;
+}
+
+// The channel names of the table (or fit map) the metadata key 'table'
+// names, or none.
+std::vector<std::string> DefinitionChannelNames(const Table &table) {
+  const std::string *name = table.FindMetadata("table");
+  if (!name) return {};
+  const TableDefinition *definition = FindTable(PlainTableName(*name));
+  if (!definition) return {};
+  const bool fit = name->size() > 4 && name->compare(name->size() - 4, 4, ".fit") == 0;
+  return fit ? definition->FitMapNames() : definition->ChannelNames();
+}
+
+}  // namespace
 
 void ShapeFromMetadata(const std::string &path, long width, long height, Table *tablePtr) {
   Table &table = *tablePtr;
@@ -46,14 +70,9 @@ void ShapeFromMetadata(const std::string &path, long width, long height, Table *
                   " but the axes say " + std::to_string(table.x.count) + " x " +
                   std::to_string(table.y.count) +
                   (table.is3D() ? " x " + std::to_string(table.z.count) : std::string()));
-  // "T", or "T.err" for an error map (ErrorMapOf).
+  // "T", or "T.err" for an error map (ErrorMapOf), "T.fit" for a fit map (FitMapOf).
   const std::string *name = table.FindMetadata("table");
-  if (name) {
-    const std::string plain = name->size() > 4 && name->compare(name->size() - 4, 4, ".err") == 0
-                                  ? name->substr(0, name->size() - 4)
-                                  : *name;
-    table.definition = FindTable(plain);
-  }
+  if (name) table.definition = FindTable(PlainTableName(*name));
   // An engine preset's texture (lutbake/presets/preset.h) is no table
   // definition's: its metadata names the preset instead.
   if (!table.definition && !table.FindMetadata("preset"))
@@ -220,8 +239,17 @@ Table ReadExrTable(const std::string &path) {
       table.channelNames = {"R", "G"};
     else if (channels.findChannel("Y"))
       table.channelNames = {"Y"};
+    else if (const std::vector<std::string> named = DefinitionChannelNames(table);
+             !named.empty() && std::all_of(named.begin(), named.end(), [&](const std::string &c) {
+               return channels.findChannel(c) != nullptr;
+             }))
+      // More than two channels (ltc_ggx's m00 ... fresnel, or a fit map's):
+      // EXR keeps channels sorted by name, so the order is the definition's.
+      table.channelNames = named;
     else
-      throw IoError(path + ": no Y channel and no R, G channels");
+      throw IoError(path +
+                    ": no Y channel, no R, G channels and not the channels of the table "
+                    "its metadata names");
     table.channels = static_cast<int>(table.channelNames.size());
     ShapeFromMetadata(path, width, height, &table);
     std::vector<float> pixels(static_cast<size_t>(width) * height * table.channels);
@@ -279,7 +307,7 @@ HeaderValues ReadHeaderValues(const std::string &path) {
   const long width = ConstantAfter(text, "kWidth"), height = ConstantAfter(text, "kHeight"),
              channels = ConstantAfter(text, "kChannels");
   if (width < 1 || height < 1 || channels < 1 || width > (1 << 16) || height > (1 << 16) ||
-      channels > 2)
+      channels > kMaxTableChannels)
     throw IoError(path + ": kWidth, kHeight or kChannels missing or out of range");
   // kDepth: a 3D table's slice count (absent: 1).
   const long depth =

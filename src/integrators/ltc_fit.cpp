@@ -202,15 +202,7 @@ LtcMatrix FromParams(const Params &p) {
   return {rho * c, A * s + B * c, -rho * s, A * c - B * s};
 }
 
-Params ToParams(const LtcMatrix &m) {
-  const double rho = std::hypot(m.m00, m.m02);
-  const double det = m.Determinant();
-  if (!(det > 0.0) || !(rho > 0.0)) return {0.0, 0.0, 0.0, 0.0};  // the cosine
-  const double theta = std::atan2(-m.m02, m.m00);
-  const double c = std::cos(theta), s = std::sin(theta);
-  const double B = m.m20 * c - m.m22 * s;
-  return {theta, std::log(det / rho), std::log(rho), B / rho};
-}
+Params ToParams(const LtcMatrix &m) { return LtcParameters(m); }
 
 // Nelder-Mead on the first n parameters (the others fixed), deterministic.
 template <typename F>
@@ -299,10 +291,22 @@ Params NelderMead(const Params &start, const Params &step, int n, int maxEvaluat
 
 }  // namespace
 
+std::array<double, 4> LtcParameters(const LtcMatrix &m) {
+  const double rho = std::hypot(m.m00, m.m02);
+  const double det = m.Determinant();
+  if (!(det > 0.0) || !(rho > 0.0)) return {0.0, 0.0, 0.0, 0.0};  // the cosine
+  const double theta = std::atan2(-m.m02, m.m00);
+  const double c = std::cos(theta), s = std::sin(theta);
+  const double B = m.m20 * c - m.m22 * s;
+  return {theta, std::log(det / rho), std::log(rho), B / rho};
+}
+
 LtcTexel FitLtcTexel(const LtcLobe &lobe, double mu_o, const LtcMatrix &start,
                      const LtcFitSettings &settings) {
   LtcTexel out;
-  if (lobe.moments) {
+  if (!settings.moments) {
+    // The caller integrates them.
+  } else if (lobe.moments) {
     lobe.moments(mu_o, &out.magnitude, &out.fresnel);
   } else {
     IntegrateLobeMoments(lobe, mu_o, 1, &out.magnitude, &out.fresnel);
@@ -431,6 +435,80 @@ LtcTable FitLtcTable(const std::function<LtcLobe(double perceptualRoughness)> &l
   });
   for (int e : evaluations) t.evaluations += e;
   return t;
+}
+
+namespace {
+
+// The nodes of `values` above `from` (strictly), largest first.
+std::vector<double> NodesAbove(const std::vector<double> &values, double from) {
+  std::vector<double> out;
+  for (double v : values)
+    if (v > from) out.push_back(v);
+  std::sort(out.begin(), out.end(), std::greater<double>());
+  return out;
+}
+
+}  // namespace
+
+std::vector<LtcTexel> FitLtcGrid(const std::function<LtcLobe(double perceptualRoughness)> &lobeAt,
+                                 const std::vector<double> &mu,
+                                 const std::vector<double> &roughness,
+                                 const LtcFitSettings &settings) {
+  const size_t rows = mu.size(), columns = roughness.size();
+  std::vector<LtcTexel> out(rows * columns);
+  if (rows == 0 || columns == 0) return out;
+  // Indices in decreasing order of their values.
+  const auto decreasing = [](const std::vector<double> &v) {
+    std::vector<size_t> order(v.size());
+    for (size_t k = 0; k < v.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return v[a] > v[b]; });
+    return order;
+  };
+  const std::vector<size_t> muOrder = decreasing(mu), rOrder = decreasing(roughness);
+  std::vector<LtcLobe> lobes(columns);
+  for (size_t j = 0; j < columns; ++j) lobes[j] = lobeAt(roughness[j]);
+  // The top roughness, sequentially in mu.
+  const size_t top = rOrder[0];
+  LtcMatrix start;
+  for (size_t i : muOrder) {
+    out[i * columns + top] = FitLtcTexel(lobes[top], mu[i], start, settings);
+    start = out[i * columns + top].minv;
+  }
+  // Each mu in parallel, down in roughness.
+  tbb::parallel_for(size_t{0}, rows, [&](size_t i) {
+    LtcMatrix s = out[i * columns + top].minv;
+    for (size_t k = 1; k < columns; ++k) {
+      const size_t j = rOrder[k];
+      out[i * columns + j] = FitLtcTexel(lobes[j], mu[i], s, settings);
+      s = out[i * columns + j].minv;
+    }
+  });
+  return out;
+}
+
+LtcTexel FitLtcPoint(const std::function<LtcLobe(double perceptualRoughness)> &lobeAt, double mu,
+                     double perceptualRoughness, const std::vector<double> &gridMu,
+                     const std::vector<double> &gridRoughness, const LtcFitSettings &settings) {
+  double top = perceptualRoughness;
+  for (double r : gridRoughness) top = std::max(top, r);
+  const bool above =
+      std::none_of(gridRoughness.begin(), gridRoughness.end(), [&](double r) { return r == top; });
+  // Above every node: the path of the top node, then one step up.
+  const double columnR = above && !gridRoughness.empty()
+                             ? *std::max_element(gridRoughness.begin(), gridRoughness.end())
+                             : top;
+  const LtcLobe column = lobeAt(columnR);
+  LtcMatrix start;
+  for (double m : NodesAbove(gridMu, mu)) start = FitLtcTexel(column, m, start, settings).minv;
+  LtcTexel fit = FitLtcTexel(column, mu, start, settings);
+  if (columnR == perceptualRoughness) return fit;
+  if (columnR < perceptualRoughness)
+    return FitLtcTexel(lobeAt(perceptualRoughness), mu, fit.minv, settings);
+  std::vector<double> between;
+  for (double r : NodesAbove(gridRoughness, perceptualRoughness))
+    if (r < columnR) between.push_back(r);
+  for (double r : between) fit = FitLtcTexel(lobeAt(r), mu, fit.minv, settings);
+  return FitLtcTexel(lobeAt(perceptualRoughness), mu, fit.minv, settings);
 }
 
 LtcTable FitSheenLtcTable(SheenVisibility visibility, bool alphaIsRoughnessSquared, int size,

@@ -14,6 +14,8 @@
 
 #include "lutbake/formats/writer.h"
 #include "lutbake/integrators/albedo_quadrature.h"
+#include "lutbake/integrators/gauss_legendre.h"
+#include "lutbake/integrators/ltc_fit.h"
 #include "lutbake/integrators/sheen_quadrature.h"
 #include "lutbake/models/zeltner_sheen_ltc.h"
 #include "lutbake/tables/table_definition.h"
@@ -79,8 +81,14 @@ constexpr double kSheenBTolerance = 1e-7;
 struct Needs {
   bool splitSum = false, sheen = false, sheenB = false, f82 = false, average = false;
   bool disney = false, glass = false, glassAverage = false, zeltner = false;
+  bool ltc = false;
   bool spec = false, specAverage = false;  // the dielectric's reflection alone
 };
+
+bool IsLtcMatrixMeaning(const std::string &meaning) {
+  return meaning == "ltc_m00" || meaning == "ltc_m20" || meaning == "ltc_m02" ||
+         meaning == "ltc_m22";
+}
 
 Needs NeedsOf(const PresetTexture &texture) {
   Needs needs;
@@ -107,7 +115,10 @@ Needs NeedsOf(const PresetTexture &texture) {
       needs.specAverage = true;
     else if (c.meaning == "zeltner_a" || c.meaning == "zeltner_b" || c.meaning == "zeltner_R")
       needs.zeltner = true;
-    else if (c.meaning != "one" && c.meaning != "zero" && c.meaning != "fabric_lambert")
+    else if (IsLtcMatrixMeaning(c.meaning))
+      needs.ltc = true;
+    else if (c.meaning != "one" && c.meaning != "zero" && c.meaning != "fabric_lambert" &&
+             c.meaning != "clipped_sphere")
       throw std::invalid_argument("preset channel '" + c.meaning + "' is not known");
   }
   return needs;
@@ -165,6 +176,76 @@ PointValue DisneyDiffuseAlbedo(double mu_o, double perceptualRoughness) {
   v.value[0] /= kHdrpDisneyNormalisation;
   v.error[0] /= kHdrpDisneyNormalisation;
   return v;
+}
+
+// ltc_code's horizon-clipped sphere: a spherical cap whose vector form
+// factor has length len = sin^2(sigma) (sigma its half-angle) and direction
+// at cos(omega) = z from the normal, clipped at the horizon:
+//   F = (1 / pi) int_cap max(w.z, 0) dw,   returned as F / len
+// (max(z, 0) at len = 0). With t the angle from the cap's axis and phi
+// around it, w.z = a - b cos(phi), a = cos(omega) cos(t), b = sin(omega)
+// sin(t) >= 0, and the integral over phi is closed:
+//   2 pi a (a >= b),  0 (a <= -b),  else 2 a (pi - phi0) + 2 b sin(phi0), cos(phi0) = a / b.
+// Over t in [0, sigma] it changes form at t = |pi / 2 - omega|, where it
+// behaves as (t - t*)^(3/2): Gauss-Legendre on each side of that point
+// under the smoothstep map t = p + (q - p)(3 s^2 - 2 s^3), whose flat ends
+// make the integrand smooth in s. Agrees with ltc_code's table to its 6
+// digits.
+double ClippedSphere(double z, double len) {
+  z = std::clamp(z, -1.0, 1.0);
+  if (!(len > 0.0)) return std::max(z, 0.0);
+  const double sigma = std::asin(std::sqrt(std::min(len, 1.0)));
+  const double omega = std::acos(z), co = std::cos(omega), so = std::sin(omega);
+  const auto inner = [&](double t) {
+    const double a = co * std::cos(t), b = so * std::sin(t);
+    if (a >= b) return 2.0 * kPi * a;
+    if (a <= -b) return 0.0;
+    const double phi0 = std::acos(a / b);
+    return 2.0 * a * (kPi - phi0) + 2.0 * b * std::sin(phi0);
+  };
+  std::vector<double> breaks = {0.0};
+  const double kink = std::fabs(kPi / 2 - omega);
+  if (kink > 0.0 && kink < sigma) breaks.push_back(kink);
+  breaks.push_back(sigma);
+  const GaussLegendreRule &rule = GaussLegendre(32);
+  constexpr int kPanels = 4;
+  double sum = 0.0;
+  for (size_t k = 0; k + 1 < breaks.size(); ++k) {
+    const double p = breaks[k], q = breaks[k + 1];
+    for (int panel = 0; panel < kPanels; ++panel)
+      for (int n = 0; n < rule.n; ++n) {
+        const double s = (panel + rule.x[n]) / kPanels;
+        const double t = p + (q - p) * s * s * (3.0 - 2.0 * s);
+        const double dt = (q - p) * 6.0 * s * (1.0 - s);
+        sum += rule.w[n] / kPanels * dt * inner(t) * std::sin(t);
+      }
+  }
+  return sum / kPi / len;
+}
+
+// The LTC fits of a texture's (mu, roughness) grid, texel (i over the mu
+// axis, j over the roughness axis) at i * roughness count + j.
+std::vector<LtcTexel> FitPresetLtc(const PresetTexture &texture, int muAxis, int roughnessAxis) {
+  const PresetModel &model = texture.model;
+  if (model.visibility != PresetVisibility::kCorrelated &&
+      model.visibility != PresetVisibility::kSeparable)
+    throw std::invalid_argument(texture.file + ": the LTC channels take an exact Smith form");
+  if (muAxis < 0) throw std::invalid_argument(texture.file + ": the LTC channels need a mu axis");
+  const PresetAxis &ma = texture.axes[static_cast<size_t>(muAxis)];
+  const PresetAxis &ra = texture.axes[static_cast<size_t>(roughnessAxis)];
+  std::vector<double> mu, roughness;
+  for (int i = 0; i < ma.count; ++i) mu.push_back(ma.Quantity(i));
+  for (int j = 0; j < ra.count; ++j) roughness.push_back(ra.Quantity(j));
+  const SmithForm smith = model.visibility == PresetVisibility::kSeparable ? SmithForm::kSeparable
+                                                                           : SmithForm::kCorrelated;
+  LtcFitSettings settings;
+  settings.moments = false;  // the channels "E" and "B" integrate them
+  return FitLtcGrid(
+      [&](double q) {
+        return MicrofacetLtcLobe(Ndf{NdfKind::kGgx, AlphaOf(model.alpha, q, model.alphaMin)},
+                                 smith);
+      },
+      mu, roughness, settings);
 }
 
 }  // namespace
@@ -231,6 +312,8 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
   sheenSettings.sheenVisibility = model.sheenVisibility;
   sheenSettings.sheenAlpha =
       model.sheenAlpha == PresetAlpha::kSquared ? SheenAlpha::kSquared : SheenAlpha::kLinear;
+  const std::vector<LtcTexel> ltc =
+      needs.ltc ? FitPresetLtc(texture, muAxis, roughnessAxis) : std::vector<LtcTexel>{};
   // One task per row of x; rows of every slice in turn.
   std::mutex progressMutex;
   size_t rowsDone = 0;
@@ -322,10 +405,27 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
                 value = 1.0;
               } else if (needs.zeltner && channel.meaning.rfind("zeltner_", 0) == 0) {
                 // The published table, at alpha = the roughness axis.
-                const std::array<double, 3> ltc = ZeltnerSheenLtc(mu, roughness);
-                value = ltc[channel.meaning == "zeltner_a"   ? 0
+                const std::array<double, 3> zeltner = ZeltnerSheenLtc(mu, roughness);
+                value = zeltner[channel.meaning == "zeltner_a"   ? 0
                             : channel.meaning == "zeltner_b" ? 1
                                                              : 2];
+              } else if (IsLtcMatrixMeaning(channel.meaning)) {
+                // The fit is the value (its bound 0; what it is worth is the
+                // lobe error that eval --table ltc_ggx states).
+                const PresetAxis &ma = texture.axes[static_cast<size_t>(muAxis)];
+                const int iMu = axisTexel(ma, index[muAxis]);
+                const int iR = axisTexel(ra, index[roughnessAxis]);
+                const LtcMatrix &m = ltc[static_cast<size_t>(iMu) * ra.count + iR].minv;
+                value = channel.meaning == "ltc_m00"   ? m.m00
+                        : channel.meaning == "ltc_m20" ? m.m20
+                        : channel.meaning == "ltc_m02" ? m.m02
+                                                       : m.m22;
+              } else if (channel.meaning == "clipped_sphere") {
+                const double u = texture.axes[0].Coordinate(axisTexel(texture.axes[0], ix));
+                const double v = texture.axes.size() > 1
+                                     ? texture.axes[1].Coordinate(axisTexel(texture.axes[1], iy))
+                                     : 0.0;
+                value = ClippedSphere(2.0 * u - 1.0, v);
               } else {
                 for (const auto &[meaning, integral] : kSingle)
                   if (channel.meaning == meaning) {

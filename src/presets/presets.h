@@ -13,6 +13,7 @@ const Preset &UnrealPreset();
 const Preset &UnityHdrpPreset();
 const Preset &GodotPreset();
 const Preset &ThreejsPreset();
+const Preset &ThreejsLtcPreset();
 const Preset &GltfSampleRendererPreset();
 const Preset &LearnOpenGlPreset();
 const Preset &EeveePreset();

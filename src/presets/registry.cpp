@@ -7,6 +7,7 @@
 namespace lutbake {
 
 const std::vector<const Preset *> &AllPresets() {
+  // clang-format off
   static const std::vector<const Preset *> presets = {
       &FilamentPreset(),
       &FilamentMobilePreset(),
@@ -14,6 +15,7 @@ const std::vector<const Preset *> &AllPresets() {
       &UnityHdrpPreset(),
       &GodotPreset(),
       &ThreejsPreset(),
+      &ThreejsLtcPreset(),
       &GltfSampleRendererPreset(),
       &LearnOpenGlPreset(),
       &EeveePreset(),
@@ -22,6 +24,7 @@ const std::vector<const Preset *> &AllPresets() {
       &OsprayPreset(),
       &MaterialxPreset(),
   };
+  // clang-format on
   return presets;
 }
 

@@ -117,7 +117,14 @@ Table BakeTableOn(const TableDefinition &definition, const BakeSettings &s, cons
   std::vector<uint64_t> texelSamples(texels, 0), texelEvaluations(texels, 0);
   std::vector<uint8_t> texelQuadrature(texels, 0);
   std::atomic<size_t> done{0};
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, texels),
+  // A fitted table bakes all its texels at once (table_definition.h); the
+  // loop below then has none to run.
+  uint64_t wholeEvaluations = 0;
+  if (definition.BakedWhole()) {
+    wholeEvaluations = definition.BakeWhole(s, &table);
+    if (progress) progress(1.0);
+  }
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, definition.BakedWhole() ? 0 : texels),
                     [&](const tbb::blocked_range<size_t> &r) {
                       for (size_t k = r.begin(); k != r.end(); ++k) {
                         // Thrown out of parallel_for, which cancels the other tasks.
@@ -148,6 +155,7 @@ Table BakeTableOn(const TableDefinition &definition, const BakeSettings &s, cons
                     });
 
   BakeStats stats;
+  stats.evaluations = wholeEvaluations;
   for (size_t t = 0; t < texels; ++t) {
     stats.samples += texelSamples[t];
     stats.maxTexelSamples = std::max(stats.maxTexelSamples, texelSamples[t]);
@@ -236,6 +244,7 @@ Table BakeTableOn(const TableDefinition &definition, const BakeSettings &s, cons
   else
     boundText = definition.QuadratureBound(s);
   m.emplace_back("errorBound", boundText + stored);
+  for (auto &entry : definition.FitMetadata(table)) m.push_back(std::move(entry));
   m.emplace_back("lutbakeVersion", LutbakeVersion());
   m.emplace_back("commandLine", s.commandLine);
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

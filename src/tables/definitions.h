@@ -20,5 +20,6 @@ const TableDefinition &SpecularAverageAlbedoTable();  // spec_Eavg.cpp
 const TableDefinition &OrenNayarAlbedoTable();        // oren_nayar_E.cpp
 const TableDefinition &OrenNayarFullAlbedoTable();    // oren_nayar_E.cpp
 const TableDefinition &BurleyAlbedoTable();           // burley_E.cpp
+const TableDefinition &LtcGgxTable();                 // ltc_ggx.cpp
 
 }  // namespace lutbake

@@ -24,6 +24,7 @@ const std::vector<const TableDefinition *> &AllTables() {
       &OrenNayarAlbedoTable(),
       &OrenNayarFullAlbedoTable(),
       &BurleyAlbedoTable(),
+      &LtcGgxTable(),
   };
   // clang-format on
   return tables;

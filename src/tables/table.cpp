@@ -125,4 +125,20 @@ Table ErrorMapOf(const Table &table) {
   return map;
 }
 
+Table FitMapOf(const Table &table) {
+  Table map = table;
+  map.channels = static_cast<int>(table.fitMapNames.size());
+  map.channelNames = table.fitMapNames;
+  map.values = table.fitMaps;
+  map.errors.assign(table.fitMaps.size(), 0.0);
+  map.fitMapNames.clear();
+  map.fitMaps.clear();
+  for (auto &[key, value] : map.metadata)
+    if (key == "table") value = table.DefinitionName() + ".fit";
+  map.metadata.emplace_back("content", "per-texel measures of the fit of " +
+                                           table.DefinitionName() +
+                                           " (see fitErrors); same layout, one channel each");
+  return map;
+}
+
 }  // namespace lutbake

@@ -158,6 +158,7 @@ class Checker {
         CheckClosedForm(t);
         CheckSliceClosedForm(t);
         CheckLimits(t);
+        if (t.def->FittedChannels() > 0) CheckFit(t);
       }
       // The relations the definitions declare, each kind in turn.
       for (auto &[index, t] : tables_)
@@ -173,6 +174,8 @@ class Checker {
         if (!t.def->Relations().atMostTable.empty()) CheckAtMost(t);
       for (auto &[index, t] : tables_)
         if (!t.def->Relations().reciprocalMinus.empty()) CheckReciprocity(t);
+      for (auto &[index, t] : tables_)
+        if (!t.def->Relations().channelIs.empty()) CheckChannelIs(t);
     }
     report_.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -561,10 +564,11 @@ class Checker {
     return s;
   }
 
-  // The value (up to 2 channels) at a point of a table's axes.
+  // The value at a point of a table's axes (a fitted table's integrated
+  // channels; its fitted ones NaN).
   PointValue Reference(const Loaded &t, double x, double y, double z) const {
     return t.table.is3D() ? t.def->Evaluate3D(ReferenceSettings(t), x, y, z)
-                          : t.def->Evaluate(ReferenceSettings(t), x, y);
+                          : t.def->EvaluateIntegrals(ReferenceSettings(t), x, y);
   }
 
   // Every texel of every usable table, and the random points, in one
@@ -648,7 +652,7 @@ class Checker {
           BakeSettings s = task.t->model;
           s.estimator = Estimator::kQuadrature;
           s.tolerance = task.texel == kPointTexel ? kPointTolerance : 1e-10;
-          *task.out = task.t->def->Evaluate(s, task.x, task.y);
+          *task.out = task.t->def->EvaluateIntegrals(s, task.x, task.y);
         } else {
           *task.out = Reference(*task.t, task.x, task.y, task.z);
         }
@@ -665,10 +669,14 @@ class Checker {
     for (auto &[kind, t] : tables_) {
       if (!t.usable) continue;
       const std::vector<PointValue> &r = refTexel_[kind];
+      // A fitted table's fitted channels are their own reference (CheckFit
+      // judges them).
+      const int fitted = t.def->FittedChannels();
       for (size_t i = 0; i < r.size(); ++i)
         for (int c = 0; c < t.table.channels; ++c) {
-          t.ref[i * t.table.channels + c] = r[i].value[c];
-          t.refError[i * t.table.channels + c] = r[i].error[c];
+          const size_t at = i * t.table.channels + c;
+          t.ref[at] = c < fitted ? t.table.values[at] : r[i].value[c];
+          t.refError[at] = c < fitted ? 0.0 : r[i].error[c];
         }
     }
   }
@@ -1117,6 +1125,197 @@ class Checker {
         Name(*a.def) + " is " + a.def->DescribeModel(a.model) + " but " + Name(*b.def) + " is " +
             b.def->DescribeModel(b.model) + ": the set mixes models");
     return false;
+  }
+
+  // A channel that is another table's value (ltc_ggx's magnitude = E), at
+  // that table's texel centres, this one interpolated there: within what
+  // interpolating exact texels gives, the bounds and float rounding.
+  void CheckChannelIs(const Loaded &t) {
+    const TableRelations rel = t.def->Relations();
+    const Loaded *e = Usable(rel.channelIs);
+    if (!e || !t.usable || e->table.is3D() || t.table.is3D()) return;
+    const std::string subject = std::string(t.def->Name()) + "+" + rel.channelIs + suffix_;
+    if (!SameModel(t, *e, subject, "channel")) return;
+    const int c = rel.channelIsChannel;
+    const std::string claim =
+        t.def->ChannelMeanings()[static_cast<size_t>(c)] + " = " + e->def->ChannelMeanings()[0];
+    const Table &te = e->table, &tt = t.table;
+    Worst worst;
+    for (int y = 0; y < te.height(); ++y)
+      for (int x = 0; x < te.width(); ++x) {
+        const double px = te.x.TexelCenter(x), py = te.y.TexelCenter(y);
+        const size_t i = te.index(x, y, 0);
+        const double v = Lookup(tt, px, py, c);
+        const double exactDev = std::abs(Lookup(tt, t.ref, px, py, c) - e->ref[i]);
+        const double allowed = exactDev + t.statedErrorMax + e->Bound(i) + e->refError[i] +
+                               Lookup(tt, t.refError, px, py, c) + FloatRounding(v) +
+                               FloatRounding(te.values[i]);
+        worst.Note(std::abs(v - te.values[i]), allowed, At(te, px, py));
+      }
+    const std::string where = "at " + std::string(e->def->Name()) + "'s " +
+                              std::to_string(te.width() * te.height()) + " texel centres (" +
+                              t.def->Name() + " interpolated)";
+    if (worst.failed())
+      Add(subject, "channel", CheckStatus::kFail,
+          claim + " fails " + where + ": " + Short(worst.excessDeviation) + " apart at " +
+              Where(worst.atExcess) + ", more than the " + Short(worst.excessAllowed) + " allowed",
+          worst.excessDeviation, worst.excessAllowed, worst.atExcess);
+    else
+      Add(subject, "channel", CheckStatus::kPass,
+          claim + " " + where + ": max difference " + Short(worst.deviation) + " at " +
+              Where(worst.at),
+          worst.deviation, 0.0, worst.at);
+  }
+
+  // A fitted table (ltc_ggx): every texel usable (det M^-1 > 0); the
+  // measures of the fit (lobe error, ...) recomputed for the stored texels
+  // and held to what T.fit.exr states texel by texel (the same computation
+  // on the same float32 values: equal to float32 rounding) and to the
+  // metadata's maxima (fitErrors); and no jump between neighbours. Two
+  // neighbours on different branches of the fit (a mirrored or collapsed
+  // solution) interpolate, in a renderer's bilinear lookup, to a matrix that
+  // fits neither; in the fit's parameters (FitParameters) they are a step
+  // far larger than the steps beside it. Measured on ltc_ggx: the largest
+  // ratio of an honest table is 4.84 (64 x 64; 3.76 at 16 x 16, grazing
+  // views), a texel swapped for its mirrored branch 23 to 88 (measured with
+  // a floor of 0.02).
+  static constexpr double kJumpRatio = 10.0;
+  static constexpr double kJumpFloor = 0.03;
+  void CheckFit(const Loaded &t) {
+    const std::string name = Name(*t.def);
+    const Table &table = t.table;
+    const int ch = table.channels;
+    const size_t texels = table.texelCount();
+    size_t bad = 0;
+    std::string firstProblem;
+    std::vector<std::pair<std::string, double>> badAt;
+    for (size_t i = 0; i < texels; ++i)
+      if (const std::string p = t.def->TexelProblem(&table.values[i * ch]); !p.empty()) {
+        if (bad++ == 0) firstProblem = p, badAt = AtTexel(table, i);
+      }
+    if (bad > 0)
+      Add(name, "fit usable", CheckStatus::kFail,
+          std::to_string(bad) + " texels unusable, the first at " + Where(badAt) + ": " +
+              firstProblem,
+          static_cast<double>(bad), 0.0, badAt);
+    else
+      Add(name, "fit usable", CheckStatus::kPass,
+          "all " + std::to_string(texels) + " texels (for ltc_ggx: det M^-1 > 0)");
+    // The measures at every stored texel.
+    std::vector<std::vector<std::pair<std::string, double>>> measured(texels);
+    const auto valuesAt = [&](size_t i) {
+      PointValue v;
+      for (int c = 0; c < ch && c < kMaxTableChannels; ++c) v.value[c] = table.values[i * ch + c];
+      return v;
+    };
+    tbb::parallel_for(size_t{0}, texels, [&](size_t i) {
+      const TexelIndex k = IndexOf(table, i);
+      measured[i] = t.def->PointFitErrors(t.model, table.x.TexelCenter(k.x),
+                                          table.y.TexelCenter(k.y), valuesAt(i));
+    });
+    const std::vector<std::string> names = t.def->FitMapNames();
+    std::optional<Table> map;
+    const std::string mapPath = (fs::path(dir_) / (name + ".fit.exr")).string();
+    std::error_code ec;
+    if (fs::exists(mapPath, ec)) {
+      try {
+        map = ReadExrTable(mapPath);
+        report_.files.push_back(mapPath);
+        if (map->channelNames != names || map->values.size() != texels * names.size())
+          throw IoError(mapPath + ": not the fit maps of " + name);
+      } catch (const IoError &e) {
+        Add(name, "fit maps", CheckStatus::kFail, e.what());
+        map.reset();
+      }
+    }
+    // The metadata's maxima: "lobeError mean 0.1 max 0.6; polygonError ...".
+    const std::string *summary = table.FindMetadata("fitErrors");
+    std::string detail;
+    Worst worst;
+    for (size_t k = 0; k < names.size(); ++k) {
+      double mean = 0.0, highest = 0.0;
+      for (size_t i = 0; i < texels; ++i) {
+        const double v = measured[i].size() > k ? measured[i][k].second : NAN;
+        mean += v / static_cast<double>(texels);
+        highest = std::max(highest, v);
+        // The map holds v as float32; recomputed from the same float32
+        // texels it is the same double. Half storage moves the texels: no
+        // texel-by-texel claim then.
+        if (map && !t.halfStorage) {
+          const double stated = map->values[i * names.size() + k];
+          worst.Note(std::abs(v - stated), FloatRounding(v) + 1e-12, AtTexel(table, i));
+        }
+        if (!std::isfinite(v)) worst.Note(HUGE_VAL, 0.0, AtTexel(table, i));
+      }
+      // The summary prints 6 digits.
+      const size_t at = summary ? summary->find(names[k] + " mean ") : std::string::npos;
+      if (at != std::string::npos) {
+        const size_t m = summary->find(" max ", at);
+        const double stated =
+            m == std::string::npos ? NAN : std::strtod(summary->c_str() + m + 5, nullptr);
+        if (!(highest <= stated * (1.0 + 1e-5) + 1e-12))
+          worst.Note(highest - stated, 0.0, {{names[k] + " max", highest}});
+      }
+      detail += (k ? "; " : "") + names[k] + " mean " + Short(mean) + " max " + Short(highest);
+    }
+    const std::string against = std::string(map ? name + ".fit.exr texel by texel and " : "") +
+                                (summary ? "the metadata's maxima" : "nothing stated");
+    if (worst.failed())
+      Add(name, "fit errors", CheckStatus::kFail,
+          "recomputed for the stored texels, the fit's measures depart from " + against + " by " +
+              Short(worst.excessDeviation) + " at " + Where(worst.atExcess) + ". " + detail,
+          worst.excessDeviation, worst.excessAllowed, worst.atExcess);
+    else
+      Add(name, "fit errors", summary || map ? CheckStatus::kPass : CheckStatus::kFail,
+          "recomputed for the " + std::to_string(texels) + " stored texels, as " + against +
+              " state: " + detail);
+    // Jumps: along every row and column, the step between neighbours in the
+    // fit's parameters (max over them) against the steps two texels before
+    // and after it (not the adjacent ones, which a single outlier texel
+    // shares).
+    Worst jump;
+    size_t steps = 0;
+    const auto parameters = [&](int x, int y) {
+      return t.def->FitParameters(&table.values[table.index(x, y, 0)]);
+    };
+    for (int axis = 0; axis < 2; ++axis) {
+      const int along = axis == 0 ? table.width() : table.height();
+      const int across = axis == 0 ? table.height() : table.width();
+      for (int line = 0; line < across; ++line) {
+        std::vector<std::vector<double>> p;
+        for (int i = 0; i < along; ++i)
+          p.push_back(axis == 0 ? parameters(i, line) : parameters(line, i));
+        std::vector<double> step(along > 0 ? along - 1 : 0, 0.0);
+        for (int i = 0; i + 1 < along; ++i)
+          for (size_t k = 0; k < p[i].size() && k < p[i + 1].size(); ++k)
+            step[i] = std::max(step[i], std::abs(p[i + 1][k] - p[i][k]));
+        for (int i = 0; i + 1 < along; ++i) {
+          double beside = kJumpFloor;
+          for (int j : {i - 2, i + 2})
+            if (j >= 0 && j + 1 < along) beside = std::max(beside, step[j]);
+          const int x = axis == 0 ? i : line, y = axis == 0 ? line : i;
+          const double x2 = axis == 0 ? table.x.TexelCenter(x + 1) : table.x.TexelCenter(x);
+          const double y2 = axis == 0 ? table.y.TexelCenter(y) : table.y.TexelCenter(y + 1);
+          jump.Note(
+              step[i] / beside, kJumpRatio,
+              At(table, 0.5 * (table.x.TexelCenter(x) + x2), 0.5 * (table.y.TexelCenter(y) + y2)));
+          ++steps;
+        }
+      }
+    }
+    if (steps == 0) return;
+    const std::string jumpDetail =
+        std::to_string(steps) +
+        " neighbour steps in the fit's parameters, each against the steps two texels before "
+        "and after it (at least " +
+        Short(kJumpFloor) + "): the largest ratio " + Short(jump.deviation) + " at " +
+        Where(jump.at) + ", allowed " + Short(kJumpRatio);
+    if (jump.failed())
+      Add(name, "no jumps", CheckStatus::kFail,
+          "neighbours on different branches of the fit: " + jumpDetail, jump.excessDeviation,
+          kJumpRatio, jump.atExcess);
+    else
+      Add(name, "no jumps", CheckStatus::kPass, jumpDetail, jump.deviation, kJumpRatio, jump.at);
   }
 
   // A + B = E at E's texel centres, dfg interpolated there.

@@ -75,6 +75,10 @@ struct EvalPoint {
   // tolerance run switched to it), else the sampled estimator's name.
   std::string estimator;
   uint64_t samples = 0;
+  // A fitted table's measures of its fit at the point, as the definition
+  // states them (ltc_ggx: lobeError, polygonError, leakage); empty for
+  // integrated tables.
+  std::vector<std::pair<std::string, double>> fitErrors;
 };
 
 struct EvalResult {
@@ -84,7 +88,8 @@ struct EvalResult {
   std::vector<std::string> channelMeanings;  // "E"; "A", "B"
   std::vector<EvalPoint> points;
   // `eval --json`'s line for points[i]: table, labels, coordinates, value,
-  // error ([A, B] for two channels), estimator, samples.
+  // error (arrays for two channels or more: [A, B]), the fit's measures of a
+  // fitted table (lobeError, ...), estimator, samples.
   std::string JsonLine(size_t i) const;
 };
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "lutbake/formats/writer.h"
+#include "lutbake/tables/settings.h"
 #include "lutbake/tables/storage.h"
 #include "lutbake/tables/table.h"
 
@@ -37,6 +38,9 @@ struct TableFormat {
   // Source text that embeds the values (.inc, JS/TS modules, shader
   // arrays), read back by ReadSourceTable.
   bool sourceText = false;
+  // The most channels a table in it may have (exr, bin, header: any table's,
+  // kMaxTableChannels; the image textures and the shader arrays: two).
+  int maxChannels = 2;
 };
 
 // Every format, in the order `bake --format` lists them.

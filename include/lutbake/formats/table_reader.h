@@ -39,6 +39,12 @@ Table ReadDdsTable(const std::string &path);
 // float32 or binary16 bit patterns as errorStorage says, widened.
 Table ReadSourceTable(const std::string &path);
 
+// three.js's RectAreaLightTexturesLib.js as --format threejs-ltc writes it
+// (threejs_module.cpp): the metadata of its opening comment and an
+// eight-channel table, channels 0 to 3 from LTC_MAT_1 and 4 to 7 from
+// LTC_MAT_2.
+Table ReadThreejsLtcModule(const std::string &path);
+
 // The storage of a generated header: its sizes, kValues as written (float,
 // or half bit patterns decoded), and
 // the metadata repeated in its opening comment ("//   key: value" lines).

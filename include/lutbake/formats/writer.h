@@ -60,6 +60,7 @@ std::unique_ptr<TableWriter> MakeCArrayWriter();
 // --format threejs-dfg (threejs_module.cpp): a 2-channel table as three.js's
 // DFGLUTData.js (half floats, getDFGLUT()), for the threejs preset.
 std::unique_ptr<TableWriter> MakeThreejsDfgWriter();
+std::unique_ptr<TableWriter> MakeThreejsLtcWriter();
 
 // Throws IoError naming `path`, the table and the texel when a value is NaN
 // or outside [0, 1]: `format` (e.g. "PNG") stores only that range.

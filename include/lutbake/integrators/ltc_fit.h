@@ -25,6 +25,7 @@
 // rho = 1, beta = 0: one parameter).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -112,6 +113,9 @@ double LtcLobeError(const LtcLobe &lobe, double mu_o, double magnitude, double l
 struct LtcFitSettings {
   double leakageWeight = 1.0;  // J = e_lobe + leakageWeight * leakage
   int maxEvaluations = 600;    // Nelder-Mead budget per texel
+  // false: FitLtcTexel leaves magnitude and fresnel 0 (a caller that
+  // integrates them itself, as table ltc_ggx does with table E's quadrature).
+  bool moments = true;
 };
 
 struct LtcTexel {
@@ -120,6 +124,10 @@ struct LtcTexel {
   double objective = 0;  // J at the fit, by the level-0 rule
   int evaluations = 0;
 };
+
+// The parameters (theta*, log A, log rho, beta) above of a matrix with
+// det M^-1 > 0 (the cosine's, all 0, otherwise).
+std::array<double, 4> LtcParameters(const LtcMatrix &minv);
 
 // Fits one texel from `start`. mu_o == 1 fits the axisymmetric family.
 LtcTexel FitLtcTexel(const LtcLobe &lobe, double mu_o, const LtcMatrix &start,
@@ -161,6 +169,29 @@ struct LtcTable {
 // max(LtcTableMu(i, size), muFloor).
 LtcTable FitLtcTable(const std::function<LtcLobe(double perceptualRoughness)> &lobeAt, int size,
                      const LtcFitSettings &settings, bool errors, double muFloor = 0.0);
+
+// The fit on any grid of view cosines and perceptual roughnesses (a table's
+// texel centres), in the order FitLtcTable uses: the largest roughness
+// first, sequentially from the largest mu down (started at the cosine
+// M^-1 = I), then each mu in parallel from the largest roughness down, every
+// texel started from the one fitted before it. The path to texel (i, j) is
+// therefore: the mu nodes above mu_i in decreasing order, then mu_i, at the
+// top roughness; then the roughness nodes between r_j and the top in
+// decreasing order, then r_j. Nothing depends on the thread that runs it.
+// Texel (i over mu, j over roughness) at i * roughness.size() + j; mu and
+// roughness need not be sorted (but hold no repeats).
+std::vector<LtcTexel> FitLtcGrid(const std::function<LtcLobe(double perceptualRoughness)> &lobeAt,
+                                 const std::vector<double> &mu,
+                                 const std::vector<double> &roughness,
+                                 const LtcFitSettings &settings);
+
+// The fit at one point (mu, r) along the same path through a grid's nodes:
+// at a node of the grid, bit for bit FitLtcGrid's texel there. A point off
+// the nodes is reached from the nodes above it; a roughness above the top
+// node is fitted from the top node's fit at mu.
+LtcTexel FitLtcPoint(const std::function<LtcLobe(double perceptualRoughness)> &lobeAt, double mu,
+                     double perceptualRoughness, const std::vector<double> &gridMu,
+                     const std::vector<double> &gridRoughness, const LtcFitSettings &settings);
 
 // The sheen table of issue 28 (F = 1), alpha = r^2 (alphaIsRoughnessSquared)
 // or alpha = r. With the Charlie visibility the albedo grows as 1 / mu at

@@ -122,6 +122,15 @@ struct PresetModel {
 //               axis itself), bilinear between its entries as the authors'
 //               renderer reads it; not integrated by lutbake, so with no
 //               bound of their own (a texel's bound is its storage's only)
+//   "ltc_m00", "ltc_m20", "ltc_m02", "ltc_m22"  the entries of M^-1 of the
+//               linearly transformed cosine of the GGX lobe (table ltc_ggx's
+//               channels; models/ltc.h), fitted over the texture's whole
+//               (mu, roughness) grid at once (integrators/ltc_fit.h,
+//               FitLtcGrid); exact Smith forms only
+//   "clipped_sphere"  ltc_code's horizon-clipped sphere (LTC_2.w): the form
+//               factor of a spherical cap, clipped at the horizon, over its
+//               unclipped one |F|, at z = 2u - 1 (the cap's axis . n) and
+//               |F| = v, u and v the texel's own texture coordinates
 //   "one", "zero"  constants (a channel the engine does not read)
 // A format that holds only [0, 1] (PNG) takes min(stored, clampMax), and
 // one that holds no negative value (RGBD) max(stored, clampMin); the

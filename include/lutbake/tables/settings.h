@@ -142,11 +142,14 @@ struct BakeSettings {
 // tell a lobe 1e-24 rad wide from a mirror, and alpha = 0 is exact.
 inline constexpr double kMinimumAlpha = 1e-24;
 
-// One point, anywhere (not only at texel centres): its value in up to two
-// channels, its error bound and what it cost.
+// The most channels a table holds (an LTC table's six: ltc_ggx.cpp).
+inline constexpr int kMaxTableChannels = 6;
+
+// One point, anywhere (not only at texel centres): its value in up to
+// kMaxTableChannels channels, its error bound and what it cost.
 struct PointValue {
-  double value[2] = {0, 0};
-  double error[2] = {0, 0};
+  double value[kMaxTableChannels] = {};
+  double error[kMaxTableChannels] = {};
   uint64_t samples = 0;
   uint64_t evaluations = 0;
   bool quadrature = false;

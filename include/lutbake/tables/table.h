@@ -73,6 +73,12 @@ struct Table {
   std::vector<double> errors;             // same layout: estimated error bound per value
   // Ordered (key, value) pairs: table, ndf, smith, fresnel, estimator, ...
   std::vector<std::pair<std::string, std::string>> metadata;
+  // A fitted table's per-texel maps (TableDefinition::FitMapNames: an LTC
+  // table's lobeError, polygonError, leakage), texel by texel in the order
+  // of the values: fitMaps[texel * fitMapNames.size() + k]. Empty for the
+  // integrated tables.
+  std::vector<std::string> fitMapNames;
+  std::vector<double> fitMaps;
 
   // name, or the definition's name ("" without either).
   std::string Name() const;
@@ -112,5 +118,11 @@ bool ParseAxisDescription(const std::string &text, Axis *axis);
 // values are the per-texel error bounds of T.exr's float32 values (rounding
 // included, rounded up: storage.h), written as T.err.exr.
 Table ErrorMapOf(const Table &table);
+
+// The fit maps of a fitted table (fitMapNames, fitMaps) as a table of the
+// same axes whose channels are the maps, written as T.fit.exr; its metadata
+// is the table's with 'table' = "T.fit". Its errors are zero (the maps are
+// measurements, not bounded values).
+Table FitMapOf(const Table &table);
 
 }  // namespace lutbake

@@ -133,6 +133,11 @@ struct TableRelations {
   // (reciprocity of the BTDF, docs/tables.md "Rough glass"); checked at every pair
   // of slices eta, 1 / eta that both tables hold.
   std::string reciprocalMinus;
+  // Channel channelIsChannel of this table is table channelIs's value at
+  // the same point (ltc_ggx's magnitude is E), checked at channelIs's texel
+  // centres, this table interpolated there.
+  std::string channelIs;
+  int channelIsChannel = 0;
 };
 
 // Why a bake plan (plans/plan.h) needs a table.
@@ -231,7 +236,7 @@ class TableDefinition {
   // Does it take the sampled estimators and --tolerance? (F_avg is always
   // integrated by its deterministic rule.)
   virtual bool Sampled() const { return true; }
-  // Its value (up to two channels) and error bound at axis values (x, y),
+  // Its value (up to kMaxTableChannels channels) and error bound at axis values (x, y),
   // with the settings' estimator. Throws std::domain_error outside the
   // accepted coordinates.
   virtual PointValue Evaluate(const BakeSettings &settings, double x, double y) const = 0;
@@ -261,6 +266,44 @@ class TableDefinition {
   // (metadata 'estimator'), and the unseen-event term of their bound.
   virtual std::string SamplerNote(const BakeSettings &) const { return ""; }
   virtual std::string UnseenEventTerm() const { return "4.6 / N"; }
+
+  // ---- fitted tables ----------------------------------------------------
+  // A table whose texels depend on one another (an LTC fit, each texel
+  // started from its neighbour's so that neighbours stay on one branch) is
+  // baked whole: BakeWhole fills table->values and table->errors (its axes,
+  // channels and sizes are set, the values zero) and the per-texel maps of
+  // FitMapNames (table->fitMaps), bit-identically for any thread count, and
+  // returns the integrand evaluations it spent. FitMetadata summarises the
+  // maps for every file's metadata. The default (every integrated table):
+  // not baked whole; the baker evaluates each texel alone with Evaluate.
+  virtual bool BakedWhole() const { return false; }
+  virtual uint64_t BakeWhole(const BakeSettings &, Table *) const { return 0; }
+  virtual std::vector<std::string> FitMapNames() const { return {}; }
+  virtual Metadata FitMetadata(const Table &) const { return {}; }
+  // The same measures at a point for the channel values v (what Evaluate
+  // gave, or a texel as stored: eval prints them beside the values, check
+  // recomputes them): {"lobeError", e}, ...; none for an integrated table.
+  virtual std::vector<std::pair<std::string, double>> PointFitErrors(
+      const BakeSettings &, double /*x*/, double /*y*/, const PointValue & /*v*/) const {
+    return {};
+  }
+  // The fit's own parameters of a texel's channels, in which the fit varies
+  // smoothly over a branch and jumps where neighbours lie on different
+  // branches (ltc_ggx: theta*, log A, log rho, beta of ltc_fit.h): check
+  // looks for a step between neighbours far larger than the steps beside it.
+  virtual std::vector<double> FitParameters(const double * /*channels*/) const { return {}; }
+  // How many leading channels are the fit (ltc_ggx's four entries of M^-1),
+  // not integrals: check judges them by the measures above, not against a
+  // quadrature, and TexelProblem says what makes a texel's fit unusable
+  // ("det M^-1 = -0.1 <= 0"; "" when it is usable).
+  virtual int FittedChannels() const { return 0; }
+  virtual std::string TexelProblem(const double * /*channels*/) const { return ""; }
+  // The integrated channels alone at (x, y) (check's reference and random
+  // points), the fitted ones NaN; the default (every integrated table):
+  // Evaluate.
+  virtual PointValue EvaluateIntegrals(const BakeSettings &settings, double x, double y) const {
+    return Evaluate(settings, x, y);
+  }
 
   // ---- claims ---------------------------------------------------------
   virtual ValueClaim Range(const BakeSettings &) const { return {0.0, 1.0, false, "in [0, 1]"}; }
