@@ -75,8 +75,9 @@ TEST(ExrWriter, ReadsBackThroughOpenImageIO) {
       ASSERT_NE(it, spec.channelnames.end()) << t.channelNames[c];
       fileChannel.push_back(static_cast<size_t>(it - spec.channelnames.begin()));
     }
-    if (t.channels <= 2)  // Y; R, G: in the table's order
+    if (t.channels <= 2) {  // Y; R, G: in the table's order
       for (int c = 0; c < t.channels; ++c) EXPECT_EQ(fileChannel[c], static_cast<size_t>(c));
+    }
     EXPECT_EQ(spec.get_string_attribute("table"), kind->Name());
     EXPECT_EQ(spec.get_string_attribute("commandLine"), "lutbake bake --test");
     EXPECT_FALSE(spec.get_string_attribute("texelConvention").empty());
