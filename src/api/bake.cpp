@@ -461,6 +461,17 @@ int ThreadCount(int requested) {
                        : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
+std::string ToleranceLine(const BakeResult &result) {
+  double worst = 0.0;
+  for (const BakedTable &t : result.tables) worst = std::max(worst, t.integrationErrorMax);
+  char line[200];
+  std::snprintf(line, sizeof line,
+                "tolerance %.3g reached on every texel: max integration bound %.2e, %.2f s in "
+                "all (the files add the rounding of their storage)\n",
+                result.tolerance, worst, result.seconds);
+  return line;
+}
+
 BakeResult Bake(const BakeRequest &r) {
   if (r.presetFiles && r.preset.empty())
     throw UsageError("--files chooses files of a preset; it needs --preset NAME (" +

@@ -133,9 +133,46 @@ void SummarisePreset(const std::string &dir, double seconds, CheckOutcome *outco
 
 }  // namespace
 
+namespace {
+
+// `check FILE --as TABLE`: one table file under a stated convention.
+CheckOutcome CheckOneFile(const CheckRequest &request) {
+  CheckOutcome outcome;
+  outcome.isTableFile = true;
+  TableFileRequest r;
+  r.path = request.dir;
+  r.options = request.convention;
+  r.threads = request.threads;
+  outcome.tableFile = CheckTableFile(r);
+  const TableFileOutcome &t = outcome.tableFile;
+  outcome.passed = t.passed;
+  outcome.json = t.json;
+  outcome.text = t.text;
+  if (!t.passed) {
+    outcome.failed = {request.dir};
+    outcome.failureText =
+        Printed("  %s: %zu of %zu values above their tolerance; max error %.2e\n",
+                request.dir.c_str(), t.valuesAboveTolerance, t.valuesCompared, t.maxError);
+  }
+  return outcome;
+}
+
+}  // namespace
+
 CheckOutcome Check(const CheckRequest &request) {
   namespace fs = std::filesystem;
   std::error_code ec;
+  bool conventionGiven = false;
+  for (const auto &[name, value] : request.convention) conventionGiven |= !value.empty();
+  if (conventionGiven && fs::is_directory(request.dir, ec))
+    throw UsageError("--as, --preset and the convention options judge one table file; " +
+                     request.dir + " is a directory");
+  if (conventionGiven) return CheckOneFile(request);
+  if (fs::is_regular_file(request.dir, ec))
+    throw UsageError(request.dir +
+                     " is a file: name what it holds (--as TABLE or --preset NAME) "
+                     "or find out with 'lutbake identify " +
+                     request.dir + "'");
   if (!fs::is_directory(request.dir, ec))
     throw UsageError(request.dir +
                      (fs::exists(request.dir, ec) ? " is not a directory" : " does not exist") +

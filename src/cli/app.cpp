@@ -88,6 +88,9 @@ std::unique_ptr<LutbakeApp> MakeLutbakeApp() {
   cli->check = app.add_subcommand(
       "check", "Validate a baked directory against the quadrature, identities and the furnace");
   SetupCheckCommand(*cli->check, cli->checkOptions);
+  cli->identify =
+      app.add_subcommand("identify", "Name the convention of any table file, and its error");
+  SetupIdentifyCommand(*cli->identify, cli->identifyOptions);
   cli->report = app.add_subcommand(
       "report", "Measure real error against run time for every estimator (csv, md, svg)");
   SetupReportCommand(*cli->report, cli->reportOptions);
@@ -173,6 +176,7 @@ int RunParsedCommand(LutbakeApp &cli, const std::string &commandLine) {
     if (cli.plan->parsed()) return RunPlan(cli.planOptions);
     if (cli.eval->parsed()) return RunEval(cli.evalOptions, *cli.eval);
     if (cli.check->parsed()) return RunCheck(cli.checkOptions);
+    if (cli.identify->parsed()) return RunIdentify(cli.identifyOptions);
     if (cli.report->parsed()) return RunReport(cli.reportOptions);
     if (cli.furnace->parsed()) return RunFurnace(cli.furnaceOptions, *cli.furnace);
     if (cli.presets->parsed()) return RunPresets(cli.presetsJson);

@@ -186,16 +186,7 @@ void PrintResult(const BakeResult &result, bool json, bool quiet) {
     for (const std::string &line : result.nothingToBake) std::cerr << "  " << line << "\n";
     return;
   }
-  if (result.tolerance > 0.0 && !quiet) {
-    double worst = 0.0;
-    for (const BakedTable &t : result.tables) worst = std::max(worst, t.integrationErrorMax);
-    char line[200];
-    std::snprintf(line, sizeof line,
-                  "tolerance %.3g reached on every texel: max integration bound %.2e, %.2f s in "
-                  "all (the files add the rounding of their storage)\n",
-                  result.tolerance, worst, result.seconds);
-    std::cerr << line;
-  }
+  if (result.tolerance > 0.0 && !quiet) std::cerr << ToleranceLine(result);
   if (!quiet) std::cerr << WrittenFilesText(result);
   if (json) std::cout << result.json << "\n";
 }

@@ -53,7 +53,9 @@ double PresetAxis::Coordinate(int i) const {
 }
 
 double PresetAxis::Quantity(int i) const {
-  const double u = Coordinate(i);
+  // An index outside [0, N) (a table read one texel off) stands at the
+  // axis's end: u is clamped to [0, 1] first.
+  const double u = std::clamp(Coordinate(i), 0.0, 1.0);
   double q = u;
   if (mapping == PresetMapping::kSquare) q = u * u;
   if (mapping == PresetMapping::kOneMinusSquare) q = 1.0 - u * u;
@@ -158,25 +160,134 @@ PointValue DisneyDiffuseAlbedo(double mu_o, double perceptualRoughness) {
 
 }  // namespace
 
-Table BakePresetTexture(const PresetTexture &texture, const std::string &presetName,
-                        const CancellationToken *cancellation) {
+namespace {
+
+// Which axis drives mu, roughness and eta (-1: none); throws when the
+// texture's channels and axes do not fit together.
+struct AxisRoles {
+  int mu = -1, roughness = -1, eta = -1;
+};
+
+AxisRoles RolesOf(const PresetTexture &texture, const Needs &needs) {
   if (texture.axes.empty() || texture.axes.size() > 3)
     throw std::invalid_argument(texture.file + ": a preset texture has one to three axes");
-  const Needs needs = NeedsOf(texture);
-  int muAxis = -1, roughnessAxis = -1, etaAxis = -1;
+  AxisRoles roles;
   for (size_t a = 0; a < texture.axes.size(); ++a) {
     const std::string &quantity = texture.axes[a].quantity;
-    if (quantity == "mu") muAxis = static_cast<int>(a);
-    if (quantity == "roughness") roughnessAxis = static_cast<int>(a);
-    if (quantity == "eta" || quantity == "1/eta") etaAxis = static_cast<int>(a);
+    if (quantity == "mu") roles.mu = static_cast<int>(a);
+    if (quantity == "roughness") roles.roughness = static_cast<int>(a);
+    if (quantity == "eta" || quantity == "1/eta") roles.eta = static_cast<int>(a);
   }
   const bool averaged = needs.average || needs.glassAverage;
-  if (roughnessAxis < 0 || (muAxis < 0 && !averaged))
+  if (roles.roughness < 0 || (roles.mu < 0 && !averaged))
     throw std::invalid_argument(texture.file +
                                 ": a preset texture needs its mu and roughness axes");
-  if ((needs.glass || needs.glassAverage) != (etaAxis >= 0))
+  if ((needs.glass || needs.glassAverage) != (roles.eta >= 0))
     throw std::invalid_argument(texture.file +
                                 ": the glass channels, and only they, take an eta axis");
+  return roles;
+}
+
+// The channels of the texel at memory index (ix, iy, iz) (an index outside
+// the axis stands at its end: PresetAxis::Quantity), with their bounds.
+void TexelChannels(const PresetTexture &texture, const Needs &needs, const AxisRoles &roles,
+                   const int index[3], double *values, double *errors) {
+  const PresetModel &model = texture.model;
+  // The texel in memory at index i holds the axis texel i, or N - 1 - i
+  // when the axis runs from u = 1.
+  const auto quantity = [&](int axis) {
+    const PresetAxis &a = texture.axes[static_cast<size_t>(axis)];
+    return a.Quantity(a.reversed ? a.count - 1 - index[axis] : index[axis]);
+  };
+  // The settings of the tables the channels read: the model's.
+  BakeSettings microfacetSettings;
+  microfacetSettings.smith = model.visibility == PresetVisibility::kSeparable
+                                 ? SmithForm::kSeparable
+                                 : SmithForm::kCorrelated;
+  BakeSettings sheenSettings;
+  sheenSettings.sheenVisibility = model.sheenVisibility;
+  sheenSettings.sheenAlpha =
+      model.sheenAlpha == PresetAlpha::kSquared ? SheenAlpha::kSquared : SheenAlpha::kLinear;
+  const double roughness = quantity(roles.roughness);
+  const double mu = roles.mu >= 0 ? quantity(roles.mu) : 0.0;
+  double eta = 1.0;
+  if (roles.eta >= 0) {
+    const double q = quantity(roles.eta);
+    eta = texture.axes[static_cast<size_t>(roles.eta)].quantity == "1/eta" ? 1.0 / q : q;
+  }
+  const double alpha = AlphaOf(model.alpha, roughness, model.alphaMin);
+  PointValue split, sheen, sheenB, f82, average, disney, glass, glassAverage;
+  if (needs.sheenB) {
+    const double sheenAlpha =
+        model.sheenAlpha == PresetAlpha::kSquared ? roughness * roughness : roughness;
+    const SheenIntegral b = IntegrateSheenSchlickWeightedAdaptive(model.sheenVisibility, sheenAlpha,
+                                                                  mu, kSheenBTolerance);
+    sheenB.value[0] = b.value;
+    sheenB.error[0] = b.bound;
+  }
+  if (needs.disney) disney = DisneyDiffuseAlbedo(mu, roughness);
+  if (needs.splitSum) split = SplitSum(model, mu, alpha);
+  if (needs.sheen) sheen = TableNamed("sheen_E").Evaluate(sheenSettings, mu, roughness);
+  if (needs.f82) f82 = TableNamed("f82").Evaluate(microfacetSettings, mu, std::sqrt(alpha));
+  if (needs.average)
+    average = TableNamed("Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), 0.0);
+  if (needs.glass || needs.glassAverage) {
+    // The engine's own index-matched interface: no lobe, albedo 1.
+    if (std::abs(eta - 1.0) < model.unitEtaWindow) {
+      glass.value[0] = glassAverage.value[0] = 1.0;
+    } else {
+      if (needs.glass)
+        glass = TableNamed("glass_E").Evaluate3D(microfacetSettings, mu, std::sqrt(alpha), eta);
+      if (needs.glassAverage)
+        glassAverage = TableNamed("glass_Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), eta);
+    }
+  }
+  // The single-valued meanings and the integral each reads.
+  const std::pair<const char *, const PointValue *> kSingle[] = {
+      {"sheen_E", &sheen},          {"f82", &f82},
+      {"Eavg", &average},           {"sheen_B", &sheenB},
+      {"disney_diffuse", &disney},  {"glass_E", &glass},
+      {"glass_Eavg", &glassAverage}};
+  for (size_t c = 0; c < texture.channels.size(); ++c) {
+    const PresetChannel &channel = texture.channels[c];
+    double value = 0.0, error = 0.0;
+    if (channel.meaning == "A" || channel.meaning == "B") {
+      const int k = channel.meaning == "A" ? 0 : 1;
+      value = split.value[k];
+      error = split.error[k];
+    } else if (channel.meaning == "E") {
+      value = split.value[0] + split.value[1];
+      error = split.error[0] + split.error[1];
+    } else if (channel.meaning == "fabric_lambert") {
+      // HDRP's FabricLambertNoPI: lerp(1, 1/2, alpha), alpha = roughness^2.
+      value = 1.0 - 0.5 * alpha;
+    } else if (channel.meaning == "one") {
+      value = 1.0;
+    } else {
+      for (const auto &[meaning, integral] : kSingle)
+        if (channel.meaning == meaning) {
+          value = integral->value[0];
+          error = integral->error[0];
+        }
+    }
+    const double stored = channel.scale * value + channel.offset;
+    values[c] = std::min(stored, channel.clampMax);
+    errors[c] = std::fabs(channel.scale) * error + (stored - values[c]);
+  }
+}
+
+}  // namespace
+
+void PresetTexelValues(const PresetTexture &texture, const int index[3], double *values,
+                       double *errors) {
+  const Needs needs = NeedsOf(texture);
+  TexelChannels(texture, needs, RolesOf(texture, needs), index, values, errors);
+}
+
+Table BakePresetTexture(const PresetTexture &texture, const std::string &presetName,
+                        const CancellationToken *cancellation) {
+  const Needs needs = NeedsOf(texture);
+  const AxisRoles roles = RolesOf(texture, needs);
 
   Table table;
   table.name = texture.file.substr(0, texture.file.find('.'));
@@ -201,23 +312,7 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
   table.values.assign(table.texelCount() * table.channels, 0.0);
   table.errors.assign(table.values.size(), 0.0);
 
-  const PresetModel &model = texture.model;
   const int width = table.width(), height = table.height(), depth = table.depth();
-  // The texel in memory at (ix, iy, iz) holds the axis texel i = ix, or N -
-  // 1 - ix when the axis runs from u = 1.
-  const auto axisTexel = [](const PresetAxis &axis, int index) {
-    return axis.reversed ? axis.count - 1 - index : index;
-  };
-  // The settings of the tables the channels read: the model's, the same at
-  // every texel.
-  BakeSettings microfacetSettings;
-  microfacetSettings.smith = model.visibility == PresetVisibility::kSeparable
-                                 ? SmithForm::kSeparable
-                                 : SmithForm::kCorrelated;
-  BakeSettings sheenSettings;
-  sheenSettings.sheenVisibility = model.sheenVisibility;
-  sheenSettings.sheenAlpha =
-      model.sheenAlpha == PresetAlpha::kSquared ? SheenAlpha::kSquared : SheenAlpha::kLinear;
   // One task per row of x; rows of every slice in turn.
   tbb::parallel_for(
       tbb::blocked_range<int>(0, height * depth), [&](const tbb::blocked_range<int> &rows) {
@@ -226,81 +321,8 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
           const int iy = row % height, iz = row / height;
           for (int ix = 0; ix < width; ++ix) {
             const int index[3] = {ix, iy, iz};
-            const PresetAxis &ra = texture.axes[static_cast<size_t>(roughnessAxis)];
-            const double roughness = ra.Quantity(axisTexel(ra, index[roughnessAxis]));
-            double mu = 0.0, eta = 1.0;
-            if (muAxis >= 0) {
-              const PresetAxis &ma = texture.axes[static_cast<size_t>(muAxis)];
-              mu = ma.Quantity(axisTexel(ma, index[muAxis]));
-            }
-            if (etaAxis >= 0) {
-              const PresetAxis &ea = texture.axes[static_cast<size_t>(etaAxis)];
-              const double q = ea.Quantity(axisTexel(ea, index[etaAxis]));
-              eta = ea.quantity == "1/eta" ? 1.0 / q : q;
-            }
-            const double alpha = AlphaOf(model.alpha, roughness, model.alphaMin);
-            PointValue split, sheen, sheenB, f82, average, disney, glass, glassAverage;
-            if (needs.sheenB) {
-              const double sheenAlpha =
-                  model.sheenAlpha == PresetAlpha::kSquared ? roughness * roughness : roughness;
-              const SheenIntegral b = IntegrateSheenSchlickWeightedAdaptive(
-                  model.sheenVisibility, sheenAlpha, mu, kSheenBTolerance);
-              sheenB.value[0] = b.value;
-              sheenB.error[0] = b.bound;
-            }
-            if (needs.disney) disney = DisneyDiffuseAlbedo(mu, roughness);
-            if (needs.splitSum) split = SplitSum(model, mu, alpha);
-            if (needs.sheen) sheen = TableNamed("sheen_E").Evaluate(sheenSettings, mu, roughness);
-            if (needs.f82)
-              f82 = TableNamed("f82").Evaluate(microfacetSettings, mu, std::sqrt(alpha));
-            if (needs.average)
-              average = TableNamed("Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), 0.0);
-            if (needs.glass || needs.glassAverage) {
-              // The engine's own index-matched interface: no lobe, albedo 1.
-              if (std::abs(eta - 1.0) < model.unitEtaWindow) {
-                glass.value[0] = glassAverage.value[0] = 1.0;
-              } else {
-                if (needs.glass)
-                  glass = TableNamed("glass_E").Evaluate3D(microfacetSettings, mu, std::sqrt(alpha),
-                                                           eta);
-                if (needs.glassAverage)
-                  glassAverage =
-                      TableNamed("glass_Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), eta);
-              }
-            }
-            // The single-valued meanings and the integral each reads.
-            const std::pair<const char *, const PointValue *> kSingle[] = {
-                {"sheen_E", &sheen},          {"f82", &f82},
-                {"Eavg", &average},           {"sheen_B", &sheenB},
-                {"disney_diffuse", &disney},  {"glass_E", &glass},
-                {"glass_Eavg", &glassAverage}};
-            for (int c = 0; c < table.channels; ++c) {
-              const PresetChannel &channel = texture.channels[static_cast<size_t>(c)];
-              double value = 0.0, error = 0.0;
-              if (channel.meaning == "A" || channel.meaning == "B") {
-                const int k = channel.meaning == "A" ? 0 : 1;
-                value = split.value[k];
-                error = split.error[k];
-              } else if (channel.meaning == "E") {
-                value = split.value[0] + split.value[1];
-                error = split.error[0] + split.error[1];
-              } else if (channel.meaning == "fabric_lambert") {
-                // HDRP's FabricLambertNoPI: lerp(1, 1/2, alpha), alpha = roughness^2.
-                value = 1.0 - 0.5 * alpha;
-              } else if (channel.meaning == "one") {
-                value = 1.0;
-              } else {
-                for (const auto &[meaning, integral] : kSingle)
-                  if (channel.meaning == meaning) {
-                    value = integral->value[0];
-                    error = integral->error[0];
-                  }
-              }
-              const size_t at = table.index(ix, iy, iz, c);
-              const double stored = channel.scale * value + channel.offset;
-              table.values[at] = std::min(stored, channel.clampMax);
-              table.errors[at] = std::fabs(channel.scale) * error + (stored - table.values[at]);
-            }
+            const size_t at = table.index(ix, iy, iz, 0);
+            TexelChannels(texture, needs, roles, index, &table.values[at], &table.errors[at]);
           }
         }
       });

@@ -143,6 +143,10 @@ struct BakeResult {
   std::string json;
 };
 
+// `bake --tolerance`'s closing line: the tolerance reached, the largest
+// integration bound and the time.
+std::string ToleranceLine(const BakeResult &result);
+
 BakeResult Bake(const BakeRequest &request);
 
 // What the command line prints as a table finishes: one line, in columns

@@ -86,6 +86,9 @@ struct EvalResult {
   // `eval --json`'s line for points[i]: table, labels, coordinates, value,
   // error ([A, B] for two channels), estimator, samples.
   std::string JsonLine(size_t i) const;
+  // Point i as `eval` prints it: "E   mu 0.5        roughness 0.3        E
+  // 0.97...  error 1e-10  (quadrature)", with its newline.
+  std::string TextLine(size_t i) const;
 };
 
 EvalResult Evaluate(const EvalRequest &request);

@@ -155,4 +155,12 @@ std::string PresetNameList();
 Table BakePresetTexture(const PresetTexture &texture, const std::string &presetName,
                         const CancellationToken *cancellation = nullptr);
 
+// One texel of BakePresetTexture: the channels (and their bounds) of the
+// texel at memory index (index[0], index[1], index[2]) (unused axes 0). An
+// index outside [0, N) is the axis's end (u clamped to [0, 1]), as a table
+// read one texel off holds there. `values` and `errors` take one entry per
+// channel.
+void PresetTexelValues(const PresetTexture &texture, const int index[3], double *values,
+                       double *errors);
+
 }  // namespace lutbake
