@@ -168,11 +168,6 @@ CheckOutcome Check(const CheckRequest &request) {
     throw UsageError("--as, --preset and the convention options judge one table file; " +
                      request.dir + " is a directory");
   if (conventionGiven) return CheckOneFile(request);
-  if (fs::is_regular_file(request.dir, ec))
-    throw UsageError(request.dir +
-                     " is a file: name what it holds (--as TABLE or --preset NAME) "
-                     "or find out with 'lutbake identify " +
-                     request.dir + "'");
   if (!fs::is_directory(request.dir, ec))
     throw UsageError(request.dir +
                      (fs::exists(request.dir, ec) ? " is not a directory" : " does not exist") +

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <unordered_map>
 
 #include "bake_internal.h"
 #include "lutbake/api/names.h"
@@ -180,32 +181,36 @@ class ExactValues {
       : layout_(layout),
         n0_(layout.axes[0].count),
         n1_(layout.axes.size() > 1 ? layout.axes[1].count : 1),
-        channels_(layout.channels.size()),
-        values_(static_cast<size_t>(n0_ + 2) * (n1_ + 2) * channels_),
-        errors_(values_.size()),
-        done_(values_.size() / std::max<size_t>(channels_, 1), 0) {}
+        channels_(layout.channels.size()) {}
   size_t Slot(int i0, int i1) const {
     i0 = std::clamp(i0, -1, n0_);
     i1 = layout_.axes.size() > 1 ? std::clamp(i1, -1, n1_) : 0;
     return static_cast<size_t>(i1 + 1) * (n0_ + 2) + static_cast<size_t>(i0 + 1);
   }
   // Computes the slots not yet known, in parallel (each independent of the
-  // others and of the thread: the same values for any thread count).
+  // others and of the thread: the same values for any thread count). Only
+  // the slots asked for are held: identify asks a few thousand of each of
+  // its layouts, whatever the file's size.
   void Ensure(std::vector<size_t> slots) {
     std::sort(slots.begin(), slots.end());
     slots.erase(std::unique(slots.begin(), slots.end()), slots.end());
-    slots.erase(std::remove_if(slots.begin(), slots.end(), [&](size_t s) { return done_[s]; }),
-                slots.end());
+    slots.erase(
+        std::remove_if(slots.begin(), slots.end(), [&](size_t s) { return row_.count(s) != 0; }),
+        slots.end());
+    const size_t first = values_.size() / std::max<size_t>(channels_, 1);
+    for (size_t k = 0; k < slots.size(); ++k) row_[slots[k]] = first + k;
+    values_.resize((first + slots.size()) * channels_);
+    errors_.resize(values_.size());
     tbb::parallel_for(size_t{0}, slots.size(), [&](size_t k) {
       const size_t s = slots[k];
       const int index[3] = {static_cast<int>(s % (n0_ + 2)) - 1,
                             static_cast<int>(s / (n0_ + 2)) - 1, 0};
-      PresetTexelValues(layout_, index, &values_[s * channels_], &errors_[s * channels_]);
+      PresetTexelValues(layout_, index, &values_[(first + k) * channels_],
+                        &errors_[(first + k) * channels_]);
     });
-    for (size_t s : slots) done_[s] = 1;
   }
-  const double *Values(size_t slot) const { return &values_[slot * channels_]; }
-  const double *Errors(size_t slot) const { return &errors_[slot * channels_]; }
+  const double *Values(size_t slot) const { return &values_[row_.at(slot) * channels_]; }
+  const double *Errors(size_t slot) const { return &errors_[row_.at(slot) * channels_]; }
   // The layout's quantity on axis a at memory index i (clamped).
   double Quantity(size_t a, int i) const {
     if (a >= layout_.axes.size()) return 0.0;
@@ -218,8 +223,8 @@ class ExactValues {
   PresetTexture layout_;
   int n0_, n1_;
   size_t channels_;
+  std::unordered_map<size_t, size_t> row_;  // slot -> its row in values_, errors_
   std::vector<double> values_, errors_;
-  std::vector<char> done_;
 };
 
 // File texel (fx, fy) -> the layout's memory indices (i0, i1).
@@ -740,7 +745,8 @@ TableFileOutcome CheckTableFile(const TableFileRequest &request) {
 TableFileOutcome IdentifyTable(const TableFileRequest &request) {
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
                                   static_cast<size_t>(ThreadCount(request.threads)));
-  const RawImage raw = ReadRawImage(request.path);
+  const auto shared = std::make_shared<const RawImage>(ReadRawImage(request.path));
+  const RawImage &raw = *shared;
   const std::string onlyPreset = Get(request.options, "preset");
   if (!onlyPreset.empty() && !FindPreset(onlyPreset))
     throw UsageError("--preset '" + onlyPreset + "' is not a preset; accepted: " +
@@ -774,7 +780,7 @@ TableFileOutcome IdentifyTable(const TableFileRequest &request) {
   struct Tried {
     Candidate candidate;
     std::string smithOfLayout;
-    RawImage image;
+    std::shared_ptr<const RawImage> image;  // shaped (a source array), else the file's
     double rms = 0.0;
   };
   std::vector<Tried> tried;
@@ -790,11 +796,11 @@ TableFileOutcome IdentifyTable(const TableFileRequest &request) {
       layout.transposed = transposed;
       for (const char *encoding : {"linear", "srgb", "rgbd"}) {
         layout.encoding = encoding;
-        RawImage image;
+        std::shared_ptr<const RawImage> shaped = shared;
         Candidate first;
         try {
-          image = ShapedFor(raw, layout, "");
-          first = Realise(layout, image);
+          if (raw.flat) shaped = std::make_shared<const RawImage>(ShapedFor(raw, layout, ""));
+          first = Realise(layout, *shaped);
         } catch (const UsageError &) {
           continue;  // not this file's size or channels
         }
@@ -802,6 +808,7 @@ TableFileOutcome IdentifyTable(const TableFileRequest &request) {
         for (const PresetChannel &ch : first.layout.channels)
           splitSum = splitSum || SplitSumChannel(ch.meaning);
         const std::string own = first.convention.smith;
+        const RawImage &image = *shaped;
         for (const std::string &smith : splitSum ? kSmithNames : std::vector<std::string>{own}) {
           TableConvention variant = layout;
           variant.smith = smith;
@@ -820,7 +827,7 @@ TableFileOutcome IdentifyTable(const TableFileRequest &request) {
                                 std::abs(offsetY) + (smith != own);
                 EnsureFor(image, c, exactOf(c), grid);
                 const Score s = Compare(image, c, exactOf(c), grid, -1.0, nullptr);
-                tried.push_back({c, own, image, s.rms()});
+                tried.push_back({c, own, shaped, s.rms()});
               }
         }
       }
@@ -859,22 +866,22 @@ TableFileOutcome IdentifyTable(const TableFileRequest &request) {
                    [](const Tried &a, const Tried &b) { return a.rms < b.rms; });
   tried.resize(std::min<size_t>(tried.size(), 12));
   for (Tried &t : tried) {
-    const Texels fine = Grid(t.image, 64);
-    EnsureFor(t.image, t.candidate, exactOf(t.candidate), fine);
-    t.rms = Compare(t.image, t.candidate, exactOf(t.candidate), fine, -1.0, nullptr).rms();
+    const Texels fine = Grid(*t.image, 64);
+    EnsureFor(*t.image, t.candidate, exactOf(t.candidate), fine);
+    t.rms = Compare(*t.image, t.candidate, exactOf(t.candidate), fine, -1.0, nullptr).rms();
   }
   const Tried *best = &tried.front();
   for (const Tried &t : tried)
     if (better(t, *best)) best = &t;
   // The winner over every texel, or a 256 x 256 grid of a larger file.
-  const Texels final = Grid(best->image, 256);
+  const RawImage &image = *best->image;
+  const Texels final = Grid(image, 256);
   ExactValues &exact = exactOf(best->candidate);
-  EnsureFor(best->image, best->candidate, exact, final);
-  const Score s = Compare(best->image, best->candidate, exact, final, -1.0, nullptr);
-  const bool every = final.size() == static_cast<size_t>(best->image.width) * best->image.height;
-  TableFileOutcome o =
-      Outcome(request.path, best->image, best->candidate, exact, s, best->smithOfLayout,
-              every ? "" : " (a 256 x 256 grid of its texels)");
+  EnsureFor(image, best->candidate, exact, final);
+  const Score s = Compare(image, best->candidate, exact, final, -1.0, nullptr);
+  const bool every = final.size() == static_cast<size_t>(image.width) * image.height;
+  TableFileOutcome o = Outcome(request.path, image, best->candidate, exact, s, best->smithOfLayout,
+                               every ? "" : " (a 256 x 256 grid of its texels)");
   o.matched = o.rmsError <= 1e-2 && o.maxError <= 0.1;
   const size_t as = o.text.find("\n  as ");
   o.text.replace(as, 6,

@@ -88,15 +88,15 @@ std::unique_ptr<LutbakeApp> MakeLutbakeApp() {
   cli->check = app.add_subcommand(
       "check", "Validate a baked directory against the quadrature, identities and the furnace");
   SetupCheckCommand(*cli->check, cli->checkOptions);
-  cli->identify =
-      app.add_subcommand("identify", "Name the convention of any table file, and its error");
-  SetupIdentifyCommand(*cli->identify, cli->identifyOptions);
   cli->report = app.add_subcommand(
       "report", "Measure real error against run time for every estimator (csv, md, svg)");
   SetupReportCommand(*cli->report, cli->reportOptions);
   cli->furnace = app.add_subcommand(
       "furnace", "The white furnace of a classic reflection model: albedo, average, pictures");
   SetupFurnaceCommand(*cli->furnace, cli->furnaceOptions);
+  cli->identify =
+      app.add_subcommand("identify", "Name the convention of any table file, and its error");
+  SetupIdentifyCommand(*cli->identify, cli->identifyOptions);
   cli->presets = app.add_subcommand(
       "presets", "The engine presets of bake --preset: each engine's textures, exact");
   SetupPresetsCommand(*cli->presets, cli->presetsJson);
