@@ -174,7 +174,10 @@ Candidate Realise(TableConvention convention, const RawImage &image) {
 }
 
 // The exact values of one layout, at memory indices -1 to N on each axis
-// (one past each end, for a file one texel off), computed when first asked.
+// (one past each end, for a file one texel off: u clamped to [0, 1], as a
+// generator's min(u, 1) or max(u, 0) gives), computed when first asked.
+// Where an integral is infinite there (Charlie sheen at mu = 0), the
+// evaluation throws and identify passes the candidate over.
 class ExactValues {
  public:
   explicit ExactValues(const PresetTexture &layout)
@@ -825,7 +828,13 @@ TableFileOutcome IdentifyTable(const TableFileRequest &request) {
                 if ((image.width == 1 && offsetX) || (image.height == 1 && offsetY)) continue;
                 c.departures += c.convention.flipX + c.convention.flipY + std::abs(offsetX) +
                                 std::abs(offsetY) + (smith != own);
-                EnsureFor(image, c, exactOf(c), grid);
+                try {
+                  EnsureFor(image, c, exactOf(c), grid);
+                } catch (const std::invalid_argument &) {
+                  continue;  // a texel this layout's integrals refuse
+                } catch (const std::domain_error &) {
+                  continue;
+                }
                 const Score s = Compare(image, c, exactOf(c), grid, -1.0, nullptr);
                 tried.push_back({c, own, shaped, s.rms()});
               }

@@ -296,7 +296,7 @@ RawImage ReadSourceArray(const std::string &path) {
   for (size_t i = 0; i < text.size(); ++i)
     if (text[i] == '{' || text[i] == '[' || text[i] == '(') {
       Literals group = GroupLiterals(text, i);
-      i = group.end;
+      i = group.end - 1;  // the loop steps onto the character after the group
       if (group.values.size() > best.values.size()) best = std::move(group);
     }
   // A bare list (Filament's dfg.inc, included between braces elsewhere):

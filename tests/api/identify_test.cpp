@@ -390,3 +390,73 @@ TEST(CheckAs, ConventionsThatDoNotFitAreUsageErrors) {
 
 }  // namespace
 }  // namespace lutbake
+
+namespace lutbake {
+namespace {
+
+TEST(CheckAs, ReadsEveryFormatAPresetCanBeWrittenIn) {
+  // three.js's 16 x 16 table written by each writer, judged by the preset.
+  const fs::path dir = Scratch("formats");
+  const PresetTexture &texture = FindPreset("threejs")->textures.front();
+  const Table table = BakePresetTexture(texture, "threejs");
+  for (const char *format : {"exr", "dds", "dds-half", "ktx2", "ktx2-half", "png16", "inc",
+                             "inc-half", "js-half", "glsl-array", "hlsl-array", "threejs-dfg"}) {
+    SCOPED_TRACE(format);
+    const TableFormat *f = FindFormat(format);
+    ASSERT_NE(f, nullptr);
+    const fs::path path = dir / (std::string(format) + f->extension);
+    f->makeWriter()->Write(table, path.string(), WriteOptions{});
+    const TableFileOutcome o = CheckAs(path, {{"preset", "threejs"}});
+    EXPECT_TRUE(o.passed) << o.text;
+    EXPECT_EQ(o.valuesCompared, 16u * 16u * 2u);
+  }
+}
+
+// A Radiance HDR file of `p` (R, G = channels 0, 1; B = 0) in the new
+// run-length form, each plane as literal runs of up to 128 bytes; values
+// rounded to the nearest RGBE.
+void WriteHdr(const fs::path &path, const Planted &p) {
+  std::ofstream out(path, std::ios::binary);
+  out << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " << p.height << " +X " << p.width << "\n";
+  for (int y = 0; y < p.height; ++y) {
+    std::vector<uint8_t> planes[4];
+    for (int x = 0; x < p.width; ++x) {
+      const double r = p.values[(static_cast<size_t>(y) * p.width + x) * 2];
+      const double g = p.values[(static_cast<size_t>(y) * p.width + x) * 2 + 1];
+      const double top = std::max(r, g);
+      int e = 0;
+      if (top > 1e-32) std::frexp(top, &e);  // top = f 2^e, f in [0.5, 1)
+      const auto mantissa = [&](double v) {
+        return top > 1e-32 ? static_cast<uint8_t>(std::min(255.0, std::floor(std::ldexp(v, 8 - e))))
+                           : uint8_t{0};
+      };
+      planes[0].push_back(mantissa(r));
+      planes[1].push_back(mantissa(g));
+      planes[2].push_back(0);
+      planes[3].push_back(top > 1e-32 ? static_cast<uint8_t>(e + 128) : 0);
+    }
+    out << static_cast<char>(2) << static_cast<char>(2) << static_cast<char>(p.width >> 8)
+        << static_cast<char>(p.width & 255);
+    for (const std::vector<uint8_t> &plane : planes)
+      for (size_t at = 0; at < plane.size(); at += 128) {
+        const size_t n = std::min<size_t>(128, plane.size() - at);
+        out << static_cast<char>(n);
+        out.write(reinterpret_cast<const char *>(&plane[at]), static_cast<std::streamsize>(n));
+      }
+  }
+}
+
+TEST(CheckAs, ReadsARadianceHdrWithinItsRgbeStep) {
+  const fs::path dir = Scratch("hdr");
+  const Planted exact = Dfg(16, 16, "correlated");
+  WriteHdr(dir / "dfg.hdr", exact);
+  const TableFileOutcome o = CheckAs(dir / "dfg.hdr", {{"as", "dfg"}});
+  EXPECT_EQ(o.format, "Radiance HDR");
+  EXPECT_EQ(o.storage, "rgbe");
+  EXPECT_TRUE(o.passed) << o.text;
+  EXPECT_GT(o.maxError, 0.0);  // the 8-bit mantissa's step shows
+  EXPECT_LE(o.maxError, 1.0 / 128);
+}
+
+}  // namespace
+}  // namespace lutbake

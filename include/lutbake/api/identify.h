@@ -19,7 +19,8 @@
 //     flipX / flipY (the file's axis runs the other way), offsetX / offsetY
 //     (after the flips, file texel i holds the layout's texel i + offset; an
 //     index past the end holds the axis's end, as Filament's generator's
-//     one-texel-too-rough rows do), and the encoding: linear, srgb (the file
+//     one-texel-too-rough rows do, one before the start u = 0),
+//     and the encoding: linear, srgb (the file
 //     holds the sRGB encoding of the value: its sRGB decoding is compared)
 //     or rgbd (RGB = value / D, A = D: RGB / A is compared).
 //
