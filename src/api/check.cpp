@@ -167,6 +167,12 @@ CheckOutcome Check(const CheckRequest &request) {
   if (conventionGiven && fs::is_directory(request.dir, ec))
     throw UsageError("--as, --preset and the convention options judge one table file; " +
                      request.dir + " is a directory");
+  if (conventionGiven &&
+      (request.points != CheckRequest{}.points ||
+       request.furnaceGrid != CheckRequest{}.furnaceGrid || request.seed != CheckRequest{}.seed))
+    throw UsageError(
+        "--points, --furnace-grid and --seed apply to a bake's directory, not to one table file "
+        "judged with --as or --preset");
   if (conventionGiven) return CheckOneFile(request);
   if (!fs::is_directory(request.dir, ec))
     throw UsageError(request.dir +
