@@ -143,17 +143,43 @@ CheckOutcome CheckOneFile(const CheckRequest &request) {
   r.path = request.dir;
   r.options = request.convention;
   r.threads = request.threads;
+  const auto start = std::chrono::steady_clock::now();
   outcome.tableFile = CheckTableFile(r);
   const TableFileOutcome &t = outcome.tableFile;
   outcome.passed = t.passed;
-  outcome.json = t.json;
   outcome.text = t.text;
+  const std::string subject = std::filesystem::path(t.path).filename().string();
   if (!t.passed) {
-    outcome.failed = {request.dir};
+    outcome.failed = {subject + " values"};
     outcome.failureText =
-        Printed("  %s: %zu of %zu values above their tolerance; max error %.2e\n",
-                request.dir.c_str(), t.valuesAboveTolerance, t.valuesCompared, t.maxError);
+        Printed("  %s values: %zu of %zu values above their tolerance; max error %.2e\n",
+                subject.c_str(), t.valuesAboveTolerance, t.valuesCompared, t.maxError);
   }
+  // The shape of a set's report (one check, "values"), the file's own
+  // judgement under "tableFile".
+  nlohmann::ordered_json out;
+  out["dir"] = t.path;
+  out["passed"] = t.passed;
+  out["failed"] = outcome.failed;
+  out["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out["referenceEvaluations"] = 0;
+  out["files"] = {t.path};
+  nlohmann::ordered_json c;
+  c["subject"] = subject;
+  c["check"] = "values";
+  c["status"] = t.passed ? "pass" : "fail";
+  c["detail"] = Printed("max error %.2e, RMS %.2e; %zu of %zu values above their tolerance",
+                        t.maxError, t.rmsError, t.valuesAboveTolerance, t.valuesCompared);
+  c["worst"] = t.maxError;
+  c["allowed"] = t.worstTolerance;
+  c["at"] = {{"x", t.worstX},
+             {"y", t.worstY},
+             {"channel", t.worstChannel},
+             {"mu", t.worstMu},
+             {"roughness", t.worstRoughness}};
+  out["checks"] = nlohmann::ordered_json::array({c});
+  out["tableFile"] = nlohmann::ordered_json::parse(t.json);
+  outcome.json = out.dump(2);
   return outcome;
 }
 

@@ -14,7 +14,7 @@ void SetupCheckCommand(CLI::App &app, CheckCommandOptions &o) {
                  "Directory of a bake (T.exr, T.bin, T.h, T.err.exr), or with --as or --preset "
                  "one table file")
       ->required()
-      ->type_name("DIR|FILE");
+      ->type_name("DIR");
   AddConventionOptions(app, o.request.convention);
   app.add_option("--points", o.request.points,
                  "Random points per table at which the bilinear lookup is compared with the "

@@ -25,6 +25,14 @@ TEST(CliIdentify, ExitStatusesSayPassFailUsageAndUnreadable) {
       0);
   const std::string png = (dir / "set" / "dfg.png").string();
   EXPECT_EQ(Lutbake("check " + png + " --as dfg").status, 0);
+  // --json: the shape of a set's report, the judgement under tableFile.
+  const auto checked = Lutbake("check " + png + " --as dfg --json", true);
+  const nlohmann::json report = nlohmann::json::parse(checked.output);
+  EXPECT_EQ(report["passed"], true);
+  ASSERT_EQ(report["checks"].size(), 1u);
+  EXPECT_EQ(report["checks"][0]["check"], "values");
+  EXPECT_LE(report["checks"][0]["worst"].get<double>(), 0.5 / 255 + 1e-7);
+  EXPECT_EQ(report["tableFile"]["table"], "dfg");
   // Checked as flipped, every row is wrong: fail, with the error picture.
   const std::string picture = (dir / "error.png").string();
   const auto flipped = Lutbake("check " + png + " --as dfg --flip y --error-image " + picture);
