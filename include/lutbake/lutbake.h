@@ -20,6 +20,7 @@
 #include "lutbake/api/check.h"
 #include "lutbake/api/eval.h"
 #include "lutbake/api/furnace.h"
+#include "lutbake/api/identify.h"
 #include "lutbake/api/names.h"
 #include "lutbake/api/plan.h"
 #include "lutbake/api/presets.h"

@@ -133,9 +133,73 @@ void SummarisePreset(const std::string &dir, double seconds, CheckOutcome *outco
 
 }  // namespace
 
+namespace {
+
+// `check FILE --as TABLE`: one table file under a stated convention.
+CheckOutcome CheckOneFile(const CheckRequest &request) {
+  CheckOutcome outcome;
+  outcome.isTableFile = true;
+  TableFileRequest r;
+  r.path = request.dir;
+  r.options = request.convention;
+  r.threads = request.threads;
+  const auto start = std::chrono::steady_clock::now();
+  outcome.tableFile = CheckTableFile(r);
+  const TableFileOutcome &t = outcome.tableFile;
+  outcome.passed = t.passed;
+  outcome.text = t.text;
+  const std::string subject = std::filesystem::path(t.path).filename().string();
+  if (!t.passed) {
+    outcome.failed = {subject + " values"};
+    outcome.failureText =
+        Printed("  %s values: %zu of %zu values above their tolerance; max error %.2e\n",
+                subject.c_str(), t.valuesAboveTolerance, t.valuesCompared, t.maxError);
+  }
+  // The shape of a set's report (one check, "values"), the file's own
+  // judgement under "tableFile".
+  nlohmann::ordered_json out;
+  out["dir"] = t.path;
+  out["passed"] = t.passed;
+  out["failed"] = outcome.failed;
+  out["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out["referenceEvaluations"] = 0;
+  out["files"] = {t.path};
+  nlohmann::ordered_json c;
+  c["subject"] = subject;
+  c["check"] = "values";
+  c["status"] = t.passed ? "pass" : "fail";
+  c["detail"] = Printed("max error %.2e, RMS %.2e; %zu of %zu values above their tolerance",
+                        t.maxError, t.rmsError, t.valuesAboveTolerance, t.valuesCompared);
+  c["worst"] = t.maxError;
+  c["allowed"] = t.worstTolerance;
+  c["at"] = {{"x", t.worstX},
+             {"y", t.worstY},
+             {"channel", t.worstChannel},
+             {"mu", t.worstMu},
+             {"roughness", t.worstRoughness}};
+  out["checks"] = nlohmann::ordered_json::array({c});
+  out["tableFile"] = nlohmann::ordered_json::parse(t.json);
+  outcome.json = out.dump(2);
+  return outcome;
+}
+
+}  // namespace
+
 CheckOutcome Check(const CheckRequest &request) {
   namespace fs = std::filesystem;
   std::error_code ec;
+  bool conventionGiven = false;
+  for (const auto &[name, value] : request.convention) conventionGiven |= !value.empty();
+  if (conventionGiven && fs::is_directory(request.dir, ec))
+    throw UsageError("--as, --preset and the convention options judge one table file; " +
+                     request.dir + " is a directory");
+  if (conventionGiven &&
+      (request.points != CheckRequest{}.points ||
+       request.furnaceGrid != CheckRequest{}.furnaceGrid || request.seed != CheckRequest{}.seed))
+    throw UsageError(
+        "--points, --furnace-grid and --seed apply to a bake's directory, not to one table file "
+        "judged with --as or --preset");
+  if (conventionGiven) return CheckOneFile(request);
   if (!fs::is_directory(request.dir, ec))
     throw UsageError(request.dir +
                      (fs::exists(request.dir, ec) ? " is not a directory" : " does not exist") +

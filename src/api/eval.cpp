@@ -235,6 +235,31 @@ EvalResult Evaluate(const EvalRequest &r) {
   return result;
 }
 
+std::string EvalResult::TextLine(size_t i) const {
+  const EvalPoint &p = points[i];
+  char text[512];
+  int n = std::snprintf(text, sizeof text, "%-3s ", table.c_str());
+  for (const auto &[option, value] : labels)
+    n += std::snprintf(text + n, sizeof text - n, "%s ", value.c_str());
+  for (size_t c = 0; c < p.coordinates.size(); ++c)
+    n += std::snprintf(text + n, sizeof text - n, "%s %-10.6g ", coordinateNames[c].c_str(),
+                       p.coordinates[c]);
+  for (size_t c = 0; c < p.values.size(); ++c)
+    n += std::snprintf(text + n, sizeof text - n, "%s %.17g  ", channelMeanings[c].c_str(),
+                       p.values[c]);
+  n += std::snprintf(text + n, sizeof text - n, "error");
+  for (double error : p.errors) n += std::snprintf(text + n, sizeof text - n, " %.2g", error);
+  std::string
+      fit;  // a fitted table's errors (ltc_ggx: lobeError, ...), as std::ostream prints them
+  for (const auto &[key, value] : p.fitErrors) {
+    char number[32];
+    std::snprintf(number, sizeof number, "%g", value);
+    fit += ", " + key + " " + number;
+  }
+  return std::string(text) + "  (" + p.estimator +
+         (p.samples ? ", " + std::to_string(p.samples) + " samples" : std::string()) + fit + ")\n";
+}
+
 std::string EvalResult::JsonLine(size_t i) const {
   const EvalPoint &p = points[i];
   nlohmann::ordered_json line;

@@ -256,6 +256,16 @@ void ValidateTableNames(const BakeRequest &r) {
   }
 }
 
+std::string PresetListText() {
+  std::string text;
+  for (const Preset *preset : AllPresets()) {
+    char name[32];
+    std::snprintf(name, sizeof name, "%-22s ", preset->name.c_str());
+    text += name + preset->summary + "\n";
+  }
+  return text;
+}
+
 std::string PresetListJson() {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const Preset *preset : AllPresets()) {

@@ -94,6 +94,9 @@ std::unique_ptr<LutbakeApp> MakeLutbakeApp() {
   cli->furnace = app.add_subcommand(
       "furnace", "The white furnace of a classic reflection model: albedo, average, pictures");
   SetupFurnaceCommand(*cli->furnace, cli->furnaceOptions);
+  cli->identify =
+      app.add_subcommand("identify", "Name the convention of any table file, and its error");
+  SetupIdentifyCommand(*cli->identify, cli->identifyOptions);
   cli->presets = app.add_subcommand(
       "presets", "The engine presets of bake --preset: each engine's textures, exact");
   SetupPresetsCommand(*cli->presets, cli->presetsJson);
@@ -173,6 +176,7 @@ int RunParsedCommand(LutbakeApp &cli, const std::string &commandLine) {
     if (cli.plan->parsed()) return RunPlan(cli.planOptions);
     if (cli.eval->parsed()) return RunEval(cli.evalOptions, *cli.eval);
     if (cli.check->parsed()) return RunCheck(cli.checkOptions);
+    if (cli.identify->parsed()) return RunIdentify(cli.identifyOptions);
     if (cli.report->parsed()) return RunReport(cli.reportOptions);
     if (cli.furnace->parsed()) return RunFurnace(cli.furnaceOptions, *cli.furnace);
     if (cli.presets->parsed()) return RunPresets(cli.presetsJson);

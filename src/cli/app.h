@@ -24,12 +24,13 @@ struct LutbakeApp {
   PlanCommandOptions planOptions;
   EvalOptions evalOptions;
   CheckCommandOptions checkOptions;
+  IdentifyCommandOptions identifyOptions;
   ReportOptions reportOptions;
   FurnaceOptions furnaceOptions;
   bool presetsJson = false;
   std::string helpCommand;  // lutbake help COMMAND
-  CLI::App *bake = nullptr, *plan = nullptr, *eval = nullptr, *check = nullptr, *report = nullptr,
-           *furnace = nullptr, *presets = nullptr, *help = nullptr;
+  CLI::App *bake = nullptr, *plan = nullptr, *eval = nullptr, *check = nullptr, *identify = nullptr,
+           *report = nullptr, *furnace = nullptr, *presets = nullptr, *help = nullptr;
 };
 
 // The app with every subcommand set up; parsing it (app.parse) validates the

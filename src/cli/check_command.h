@@ -17,4 +17,12 @@ struct CheckCommandOptions {
 void SetupCheckCommand(CLI::App &app, CheckCommandOptions &options);
 int RunCheck(const CheckCommandOptions &options);
 
+// `lutbake identify FILE`: the known convention FILE is closest to (identify.h).
+struct IdentifyCommandOptions {
+  TableFileRequest request;
+  bool json = false;
+};
+void SetupIdentifyCommand(CLI::App &app, IdentifyCommandOptions &options);
+int RunIdentify(const IdentifyCommandOptions &options);
+
 }  // namespace lutbake::cli

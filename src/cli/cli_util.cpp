@@ -7,6 +7,7 @@
 
 #include "interrupt.h"
 #include "lutbake/api/bake.h"
+#include "lutbake/api/identify.h"
 #include "lutbake/core/cancellation.h"
 
 namespace lutbake::cli {
@@ -85,6 +86,14 @@ void AddSheenOptions(CLI::App &app, std::string &visibility, std::string &alpha)
       ->check(OneOf({"linear", "squared"}));
 }
 
+void AddConventionOptions(CLI::App &app, std::map<std::string, std::string> &values) {
+  for (const ConventionOption &c : ConventionOptions()) {
+    CLI::Option *option = app.add_option("--" + c.name, values[c.name], c.help);
+    option->type_name(c.typeName);
+    if (!c.accepted.empty()) option->check(c.list ? ListOf(c.accepted) : OneOf(c.accepted));
+  }
+}
+
 void AddSeedOption(CLI::App &app, uint64_t &seed, const std::string &seedHelp) {
   app.add_option("--seed", seed, seedHelp)
       ->capture_default_str()
@@ -112,7 +121,7 @@ int RunLibraryCall(const std::string &command, const std::string &outDir,
     return 128 + c.reason();
   } catch (const Error &e) {
     std::cerr << line << e.what() << "\n";
-    return e.kind() == Error::Kind::kUsage ? 2 : 1;
+    return e.kind() == Error::Kind::kUsage ? 2 : e.kind() == Error::Kind::kUnreadable ? 3 : 1;
   } catch (const std::bad_alloc &) {
     std::cerr << line << "out of memory\n";
     return 1;

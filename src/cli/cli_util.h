@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,10 @@ CLI::Validator InRange(T lo, T hi, const std::string &what) {
 void AddModelOptions(CLI::App &app, std::string &ndf, std::string &smith);
 // --sheen-visibility and --sheen-alpha: the model of the sheen tables.
 void AddSheenOptions(CLI::App &app, std::string &visibility, std::string &alpha);
+
+// The options that state a table file's convention (identify.h's
+// ConventionOptions), each bound to values[name].
+void AddConventionOptions(CLI::App &app, std::map<std::string, std::string> &values);
 
 // --seed S (any unsigned 64-bit integer) and --threads N (1 to 1024, default
 // all cores), as every subcommand spells them; `seedHelp` says what it seeds,

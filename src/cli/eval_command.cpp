@@ -1,6 +1,5 @@
 #include "eval_command.h"
 
-#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 
@@ -48,26 +47,6 @@ EvalRequest RequestOf(const EvalOptions &o, CLI::App &app) {
   return r;
 }
 
-// "E   mu 0.5        roughness 0.3        E 0.97...  error 1e-10  (quadrature)"
-void PrintPoint(const EvalResult &result, const EvalPoint &p) {
-  char text[512];
-  int n = std::snprintf(text, sizeof text, "%-3s ", result.table.c_str());
-  for (const auto &[option, value] : result.labels)
-    n += std::snprintf(text + n, sizeof text - n, "%s ", value.c_str());
-  for (size_t c = 0; c < p.coordinates.size(); ++c)
-    n += std::snprintf(text + n, sizeof text - n, "%s %-10.6g ", result.coordinateNames[c].c_str(),
-                       p.coordinates[c]);
-  for (size_t c = 0; c < p.values.size(); ++c)
-    n += std::snprintf(text + n, sizeof text - n, "%s %.17g  ", result.channelMeanings[c].c_str(),
-                       p.values[c]);
-  n += std::snprintf(text + n, sizeof text - n, "error");
-  for (double error : p.errors) n += std::snprintf(text + n, sizeof text - n, " %.2g", error);
-  std::cout << text << "  (" << p.estimator;
-  if (p.samples) std::cout << ", " << p.samples << " samples";
-  for (const auto &[key, value] : p.fitErrors) std::cout << ", " << key << " " << value;
-  std::cout << ")\n";
-}
-
 }  // namespace
 
 void SetupEvalCommand(CLI::App &app, EvalOptions &o) {
@@ -107,12 +86,8 @@ int RunEval(const EvalOptions &o, CLI::App &app) {
   const EvalRequest request = RequestOf(o, app);
   return RunLibraryCall("eval", "", [&] {
     const EvalResult result = Evaluate(request);
-    for (size_t i = 0; i < result.points.size(); ++i) {
-      if (o.json)
-        std::cout << result.JsonLine(i) << "\n";
-      else
-        PrintPoint(result, result.points[i]);
-    }
+    for (size_t i = 0; i < result.points.size(); ++i)
+      std::cout << (o.json ? result.JsonLine(i) + "\n" : result.TextLine(i));
   });
 }
 

@@ -1,6 +1,5 @@
 #include "preset_command.h"
 
-#include <cstdio>
 #include <iostream>
 
 #include "lutbake/api/presets.h"
@@ -13,12 +12,7 @@ void SetupPresetsCommand(CLI::App &app, bool &json) {
 }
 
 int RunPresets(bool json) {
-  if (json) {
-    std::cout << PresetListJson() << "\n";
-    return 0;
-  }
-  for (const Preset *preset : AllPresets())
-    std::printf("%-22s %s\n", preset->name.c_str(), preset->summary.c_str());
+  std::cout << (json ? PresetListJson() + "\n" : PresetListText());
   return 0;
 }
 

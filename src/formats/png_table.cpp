@@ -26,13 +26,16 @@
 #include <zlib.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <stdexcept>
 
 #include "file_io.h"
 #include "format_list.h"
+#include "lutbake/formats/image_reader.h"
 #include "lutbake/formats/table_reader.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/tables/rgbd.h"
@@ -199,18 +202,30 @@ std::unique_ptr<TableWriter> MakePngWriter(int bits) {
   return std::make_unique<PngWriter>(bits == 8 ? ValueType::kUnorm8 : ValueType::kUnorm16);
 }
 
-Table ReadPngTable(const std::string &path) {
+namespace {
+
+// A PNG's chunks, checked and inflated: the samples (grey, grey + alpha,
+// RGB or RGBA at 8 or 16 bits; `fileChannels` of them per pixel, row 0
+// first) and its tEXt pairs. `checkText` runs on the tEXt pairs before the
+// image is inflated (ReadPngTable refuses a PNG lutbake did not write there).
+struct DecodedPng {
+  int width = 0, height = 0, bits = 0, colourType = -1, fileChannels = 0;
+  std::vector<std::pair<std::string, std::string>> text;
+  std::vector<unsigned> samples;
+};
+
+DecodedPng DecodePng(const std::string &path,
+                     const std::function<void(const DecodedPng &)> &checkText) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError("cannot read " + path + ": " + std::strerror(errno));
   const std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const auto *bytes = reinterpret_cast<const unsigned char *>(file.data());
   const auto refuse = [&](const std::string &why) -> IoError {
     return IoError(path + ": " + why +
-                   " (lutbake reads 8- or 16-bit grey or RGB PNGs, and 8-bit RGBA in RGBD)");
+                   " (lutbake reads 8- or 16-bit grey, grey + alpha, RGB or RGBA PNGs)");
   };
   if (file.size() < 8 || std::memcmp(bytes, kSignature, 8) != 0) throw refuse("not a PNG");
-  Table table;
-  int width = 0, height = 0, bits = 0, colourType = -1;
+  DecodedPng png;
   std::string packed;
   bool ended = false;
   for (size_t at = 8; at < file.size() && !ended;) {
@@ -225,16 +240,16 @@ Table ReadPngTable(const std::string &path) {
     if (type == "IHDR") {
       if (length != 13) throw refuse("IHDR is not 13 bytes");
       const auto *d = reinterpret_cast<const unsigned char *>(data.data());
-      width = static_cast<int>(std::min<uint32_t>(GetU32(d), 1u << 24));
-      height = static_cast<int>(std::min<uint32_t>(GetU32(d + 4), 1u << 24));
-      bits = d[8];
-      colourType = d[9];
+      png.width = static_cast<int>(std::min<uint32_t>(GetU32(d), 1u << 24));
+      png.height = static_cast<int>(std::min<uint32_t>(GetU32(d + 4), 1u << 24));
+      png.bits = d[8];
+      png.colourType = d[9];
       if (d[10] != 0 || d[11] != 0 || d[12] != 0)
         throw refuse("an unknown compression, filter or interlace method");
     } else if (type == "tEXt") {
       const size_t zero = data.find('\0');
       if (zero == std::string::npos) throw refuse("a tEXt chunk without its keyword's end");
-      table.metadata.emplace_back(data.substr(0, zero), data.substr(zero + 1));
+      png.text.emplace_back(data.substr(0, zero), data.substr(zero + 1));
     } else if (type == "IDAT") {
       packed += data;
     } else if (type == "IEND") {
@@ -243,63 +258,136 @@ Table ReadPngTable(const std::string &path) {
     at += 12 + length;
   }
   if (!ended) throw refuse("no IEND chunk");
-  const bool rgbd = colourType == 6 && bits == 8;
-  if ((bits != 8 && bits != 16) || (colourType != 0 && colourType != 2 && !rgbd) || width <= 0 ||
-      height <= 0)
-    throw refuse("bit depth " + std::to_string(bits) + ", colour type " +
-                 std::to_string(colourType));
-  const int fileChannels = colourType == 0 ? 1 : rgbd ? 4 : 3;
-  const std::string *storage = table.FindMetadata("errorStorage");
-  const std::string expected = rgbd ? "rgbd8" : bits == 8 ? "unorm8" : "unorm16";
-  if (!storage || *storage != expected)
-    throw IoError(path + ": tEXt errorStorage is not " + expected + " for a " +
-                  std::to_string(bits) + "-bit PNG");
-  // RGB holds two channels and an unused B, or three (channelMapping says which).
-  const std::string *mapping = table.FindMetadata("channelMapping");
-  table.channels = fileChannels == 1 ? 1 : mapping && *mapping == ChannelMapping(3) ? 3 : 2;
-  for (int c = 1; rgbd && c <= 3; ++c)
-    if (mapping && *mapping == RgbdMapping(c)) table.channels = c;
-  table.channelNames = table.channels == 1   ? std::vector<std::string>{"Y"}
-                       : table.channels == 2 ? std::vector<std::string>{"R", "G"}
-                                             : std::vector<std::string>{"R", "G", "B"};
-  ShapeFromMetadata(path, width, height, &table);
-  const int bytesPerPixel = fileChannels * bits / 8;
-  const size_t rowBytes = static_cast<size_t>(width) * bytesPerPixel;
-  if ((rowBytes + 1) * static_cast<size_t>(height) > (size_t{1} << 30))
-    throw refuse("an image of " + std::to_string(width) + " x " + std::to_string(height) +
+  // Colour types: 0 grey, 2 RGB, 4 grey + alpha, 6 RGBA (3, a palette, is no table).
+  static const int kChannelsOfType[] = {1, 0, 3, 0, 2, 0, 4};
+  if ((png.bits != 8 && png.bits != 16) || png.colourType < 0 || png.colourType > 6 ||
+      kChannelsOfType[png.colourType] == 0 || png.width <= 0 || png.height <= 0)
+    throw refuse("bit depth " + std::to_string(png.bits) + ", colour type " +
+                 std::to_string(png.colourType));
+  png.fileChannels = kChannelsOfType[png.colourType];
+  checkText(png);
+  const int bytesPerPixel = png.fileChannels * png.bits / 8;
+  const size_t rowBytes = static_cast<size_t>(png.width) * bytesPerPixel;
+  if ((rowBytes + 1) * static_cast<size_t>(png.height) > (size_t{1} << 30))
+    throw refuse("an image of " + std::to_string(png.width) + " x " + std::to_string(png.height) +
                  ", over 1 GiB");
   // Deflate inflates at most 1032-fold (a 258-byte match in two bits): an
   // image larger than that of its IDAT bytes is refused before it is
   // allocated, so that a 100-byte file cannot ask for a gigabyte.
   constexpr size_t kMaxInflateRatio = 1032;
-  if ((rowBytes + 1) * static_cast<size_t>(height) > kMaxInflateRatio * packed.size())
-    throw refuse("an image of " + std::to_string(width) + " x " + std::to_string(height) +
+  if ((rowBytes + 1) * static_cast<size_t>(png.height) > kMaxInflateRatio * packed.size())
+    throw refuse("an image of " + std::to_string(png.width) + " x " + std::to_string(png.height) +
                  " from " + std::to_string(packed.size()) +
                  " bytes of IDAT, more than deflate can hold");
-  std::string raw((rowBytes + 1) * height, '\0');
+  std::string raw((rowBytes + 1) * png.height, '\0');
   uLongf rawSize = static_cast<uLongf>(raw.size());
   if (uncompress(reinterpret_cast<Bytef *>(raw.data()), &rawSize,
                  reinterpret_cast<const Bytef *>(packed.data()), packed.size()) != Z_OK ||
       rawSize != raw.size())
-    throw refuse("the image data does not inflate to " + std::to_string(height) + " rows");
-  if (!Unfilter(&raw, rowBytes, height, bytesPerPixel)) throw refuse("an unknown row filter");
-  const double top = bits == 8 ? 255.0 : 65535.0;
+    throw refuse("the image data does not inflate to " + std::to_string(png.height) + " rows");
+  if (!Unfilter(&raw, rowBytes, png.height, bytesPerPixel)) throw refuse("an unknown row filter");
   const auto *q = reinterpret_cast<const unsigned char *>(raw.data());
-  const size_t texels = static_cast<size_t>(width) * height;
+  const size_t samples = static_cast<size_t>(png.width) * png.height * png.fileChannels;
+  png.samples.resize(samples);
+  for (size_t i = 0; i < samples; ++i)
+    png.samples[i] = png.bits == 8 ? q[i] : (unsigned{q[2 * i]} << 8) | q[2 * i + 1];
+  return png;
+}
+
+}  // namespace
+
+Table ReadPngTable(const std::string &path) {
+  Table table;
+  bool rgbd = false;  // 8-bit RGBA: RGBD (tables/rgbd.h), errorStorage rgbd8
+  const DecodedPng png = DecodePng(path, [&](const DecodedPng &header) {
+    rgbd = header.colourType == 6 && header.bits == 8;
+    if (header.colourType != 0 && header.colourType != 2 && !rgbd)
+      throw IoError(path + ": bit depth " + std::to_string(header.bits) + ", colour type " +
+                    std::to_string(header.colourType) +
+                    " (lutbake reads 8- or 16-bit grey or RGB PNGs, and 8-bit RGBA in RGBD)");
+    table.metadata = header.text;
+    const std::string *storage = table.FindMetadata("errorStorage");
+    const std::string expected = rgbd ? "rgbd8" : header.bits == 8 ? "unorm8" : "unorm16";
+    if (!storage || *storage != expected)
+      throw IoError(path + ": not a table lutbake wrote (no tEXt errorStorage " + expected +
+                    " in this " + std::to_string(header.bits) +
+                    "-bit PNG); to judge it, run 'lutbake check " + path +
+                    " --as TABLE' or 'lutbake identify " + path + "'");
+    // RGB holds two channels and an unused B, or three (channelMapping says which).
+    const std::string *mapping = table.FindMetadata("channelMapping");
+    table.channels = header.fileChannels == 1                   ? 1
+                     : mapping && *mapping == ChannelMapping(3) ? 3
+                                                                : 2;
+    for (int c = 1; rgbd && c <= 3; ++c)
+      if (mapping && *mapping == RgbdMapping(c)) table.channels = c;
+    table.channelNames = table.channels == 1   ? std::vector<std::string>{"Y"}
+                         : table.channels == 2 ? std::vector<std::string>{"R", "G"}
+                                               : std::vector<std::string>{"R", "G", "B"};
+    ShapeFromMetadata(path, header.width, header.height, &table);
+  });
+  const double top = png.bits == 8 ? 255.0 : 65535.0;
+  const size_t texels = static_cast<size_t>(png.width) * png.height;
   table.values.reserve(texels * table.channels);
-  for (size_t t = 0; rgbd && t < texels; ++t)
+  for (size_t t = 0; t < texels; ++t)
     for (int c = 0; c < table.channels; ++c) {
-      const unsigned char d = q[t * 4 + 3];
-      if (d == 0) throw refuse("an RGBD divisor of 0 at texel " + std::to_string(t));
-      table.values.push_back(RgbdDecode(q[t * 4 + c], d));
-    }
-  for (size_t t = 0; !rgbd && t < texels; ++t)
-    for (int c = 0; c < table.channels; ++c) {
-      const size_t i = (t * fileChannels + c) * (bits / 8);
-      const unsigned v = bits == 8 ? q[i] : (unsigned{q[i]} << 8) | q[i + 1];
-      table.values.push_back(v / top);
+      if (!rgbd) {
+        table.values.push_back(png.samples[t * png.fileChannels + c] / top);
+        continue;
+      }
+      const unsigned d = png.samples[t * 4 + 3];
+      if (d == 0) throw IoError(path + ": an RGBD divisor of 0 at texel " + std::to_string(t));
+      table.values.push_back(RgbdDecode(static_cast<unsigned char>(png.samples[t * 4 + c]),
+                                        static_cast<unsigned char>(d)));
     }
   return table;
+}
+
+RawImage ReadPngImage(const std::string &path) {
+  const DecodedPng png = DecodePng(path, [](const DecodedPng &) {});
+  RawImage image;
+  image.format = "PNG";
+  image.width = png.width;
+  image.height = png.height;
+  image.channels = png.fileChannels;
+  image.storage = png.bits == 8 ? "unorm8" : "unorm16";
+  const double top = png.bits == 8 ? 255.0 : 65535.0;
+  image.values.reserve(png.samples.size());
+  for (unsigned q : png.samples) image.values.push_back(q / top);
+  static const std::vector<std::string> kNames[] = {
+      {"Y"}, {"Y", "A"}, {"R", "G", "B"}, {"R", "G", "B", "A"}};
+  image.channelNames = kNames[png.fileChannels - 1];
+  return image;
+}
+
+void WriteRgb8Png(const std::string &path, int width, int height, const std::vector<uint8_t> &rgb) {
+  std::string raw;
+  raw.reserve((static_cast<size_t>(width) * 3 + 1) * height);
+  for (int y = 0; y < height; ++y) {
+    raw.push_back('\0');
+    raw.append(reinterpret_cast<const char *>(rgb.data()) + static_cast<size_t>(y) * width * 3,
+               static_cast<size_t>(width) * 3);
+  }
+  uLongf packedSize = compressBound(static_cast<uLong>(raw.size()));
+  std::string packed(packedSize, '\0');
+  if (compress2(reinterpret_cast<Bytef *>(packed.data()), &packedSize,
+                reinterpret_cast<const Bytef *>(raw.data()), raw.size(), 9) != Z_OK)
+    throw IoError("cannot write " + path + ": zlib could not deflate the image");
+  packed.resize(packedSize);
+  std::string file(reinterpret_cast<const char *>(kSignature), 8), ihdr;
+  PutU32(&ihdr, static_cast<uint32_t>(width));
+  PutU32(&ihdr, static_cast<uint32_t>(height));
+  ihdr += std::string("\x08\x02\0\0\0", 5);  // 8 bits, RGB, deflate, no filter, no interlace
+  PutChunk(&file, "IHDR", ihdr);
+  PutChunk(&file, "IDAT", packed);
+  PutChunk(&file, "IEND", "");
+  // A temporary beside it, renamed over it: never a half-written picture.
+  const std::string temporary = path + ".lutbake-tmp";
+  WriteWholeFile(temporary, file);
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
+    std::remove(temporary.c_str());
+    throw IoError("cannot write " + path + ": " + reason);
+  }
 }
 
 std::vector<TableFormat> PngFormats() {

@@ -16,6 +16,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "lutbake/formats/image_reader.h"
 #include "lutbake/formats/writer.h"
 #include "lutbake/tables/table_definition.h"
 
@@ -273,6 +274,58 @@ Table ReadExrTable(const std::string &path) {
     throw IoError("cannot read " + path + ": " + e.what());
   }
   return table;
+}
+
+RawImage ReadExrImage(const std::string &path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("cannot open " + path);
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  CheckExrHeader(path, bytes);
+  RawImage image;
+  image.format = "OpenEXR";
+  try {
+    Imf::StdISStream stream;
+    stream.str(bytes);
+    Imf::InputFile file(stream);
+    const Imf::Header &header = file.header();
+    const Imath::Box2i window = header.dataWindow();
+    image.width = window.max.x - window.min.x + 1;
+    image.height = window.max.y - window.min.y + 1;
+    // R, G, B, A first (in that order), then Y, then the rest by name.
+    const Imf::ChannelList &list = header.channels();
+    bool half = true;
+    for (const char *name : {"R", "G", "B", "A", "Y"})
+      if (list.findChannel(name)) image.channelNames.emplace_back(name);
+    for (auto it = list.begin(); it != list.end(); ++it) {
+      half = half && it.channel().type == Imf::HALF;
+      if (std::find(image.channelNames.begin(), image.channelNames.end(), it.name()) ==
+          image.channelNames.end())
+        image.channelNames.emplace_back(it.name());
+    }
+    if (image.channelNames.empty() || image.channelNames.size() > 16)
+      throw IoError(path + ": " + std::to_string(image.channelNames.size()) +
+                    " channels (1 to 16 are read)");
+    image.channels = static_cast<int>(image.channelNames.size());
+    image.storage = half ? "half" : "float32";
+    std::vector<float> pixels(static_cast<size_t>(image.width) * image.height * image.channels);
+    Imf::FrameBuffer frame;
+    const size_t xStride = sizeof(float) * image.channels;
+    const size_t yStride = xStride * static_cast<size_t>(image.width);
+    char *base = reinterpret_cast<char *>(pixels.data()) -
+                 static_cast<ptrdiff_t>(window.min.x) * static_cast<ptrdiff_t>(xStride) -
+                 static_cast<ptrdiff_t>(window.min.y) * static_cast<ptrdiff_t>(yStride);
+    for (int c = 0; c < image.channels; ++c)
+      frame.insert(image.channelNames[static_cast<size_t>(c)],
+                   Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xStride, yStride));
+    file.setFrameBuffer(frame);
+    file.readPixels(window.min.y, window.max.y);
+    image.values.assign(pixels.begin(), pixels.end());
+  } catch (const IoError &) {
+    throw;
+  } catch (const std::exception &e) {
+    throw IoError("cannot read " + path + ": " + e.what());
+  }
+  return image;
 }
 
 namespace {

@@ -58,7 +58,9 @@ double PresetAxis::Coordinate(int i) const {
 }
 
 double PresetAxis::Quantity(int i) const {
-  const double u = Coordinate(i);
+  // An index outside [0, N) (a table read one texel off) stands at the
+  // axis's end: u is clamped to [0, 1] first.
+  const double u = std::clamp(Coordinate(i), 0.0, 1.0);
   double q = u;
   if (mapping == PresetMapping::kSquare) q = u * u;
   if (mapping == PresetMapping::kOneMinusSquare) q = 1.0 - u * u;
@@ -248,29 +250,172 @@ std::vector<LtcTexel> FitPresetLtc(const PresetTexture &texture, int muAxis, int
       mu, roughness, settings);
 }
 
+struct AxisRoles {
+  int mu = -1, roughness = -1, eta = -1;
+};
+
+AxisRoles RolesOf(const PresetTexture &texture, const Needs &needs) {
+  if (texture.axes.empty() || texture.axes.size() > 3)
+    throw std::invalid_argument(texture.file + ": a preset texture has one to three axes");
+  AxisRoles roles;
+  for (size_t a = 0; a < texture.axes.size(); ++a) {
+    const std::string &quantity = texture.axes[a].quantity;
+    if (quantity == "mu") roles.mu = static_cast<int>(a);
+    if (quantity == "roughness") roles.roughness = static_cast<int>(a);
+    if (quantity == "eta" || quantity == "1/eta") roles.eta = static_cast<int>(a);
+  }
+  const bool averaged = needs.average || needs.glassAverage || needs.specAverage;
+  const bool dielectric = needs.glass || needs.glassAverage || needs.spec || needs.specAverage;
+  if (roles.roughness < 0 || (roles.mu < 0 && !averaged))
+    throw std::invalid_argument(texture.file +
+                                ": a preset texture needs its mu and roughness axes");
+  if (dielectric != (roles.eta >= 0))
+    throw std::invalid_argument(
+        texture.file + ": the dielectric (glass, spec) channels, and only they, take an eta axis");
+  return roles;
+}
+
+// The channels of the texel at memory index (index[0], index[1], index[2])
+// (an index outside an axis stands at its end: PresetAxis::Quantity), with
+// their bounds. `ltc`: the texture's LTC fit over its (mu, roughness) grid
+// (FitPresetLtc), where a channel reads one.
+void TexelChannels(const PresetTexture &texture, const Needs &needs, const AxisRoles &roles,
+                   const std::vector<LtcTexel> &ltc, const int index[3], double *values,
+                   double *errors) {
+  const PresetModel &model = texture.model;
+  // The texel in memory at index i holds the axis texel i, or N - 1 - i
+  // when the axis runs from u = 1.
+  const auto axisTexel = [&](int axis) {
+    const PresetAxis &a = texture.axes[static_cast<size_t>(axis)];
+    return a.reversed ? a.count - 1 - index[axis] : index[axis];
+  };
+  const auto quantity = [&](int axis) {
+    return texture.axes[static_cast<size_t>(axis)].Quantity(axisTexel(axis));
+  };
+  // The settings of the tables the channels read: the model's.
+  BakeSettings microfacetSettings;
+  microfacetSettings.smith = model.visibility == PresetVisibility::kSeparable
+                                 ? SmithForm::kSeparable
+                                 : SmithForm::kCorrelated;
+  BakeSettings sheenSettings;
+  sheenSettings.sheenVisibility = model.sheenVisibility;
+  sheenSettings.sheenAlpha =
+      model.sheenAlpha == PresetAlpha::kSquared ? SheenAlpha::kSquared : SheenAlpha::kLinear;
+  const double roughness = quantity(roles.roughness);
+  const double mu = roles.mu >= 0 ? quantity(roles.mu) : 0.0;
+  double eta = 1.0;
+  if (roles.eta >= 0) {
+    const double q = quantity(roles.eta);
+    eta = texture.axes[static_cast<size_t>(roles.eta)].quantity == "1/eta" ? 1.0 / q : q;
+  }
+  const double alpha = AlphaOf(model.alpha, roughness, model.alphaMin);
+  PointValue split, sheen, sheenB, f82, average, disney, glass, glassAverage, spec, specAverage;
+  if (needs.sheenB) {
+    const double sheenAlpha =
+        model.sheenAlpha == PresetAlpha::kSquared ? roughness * roughness : roughness;
+    const SheenIntegral b = IntegrateSheenSchlickWeightedAdaptive(model.sheenVisibility, sheenAlpha,
+                                                                  mu, kSheenBTolerance);
+    sheenB.value[0] = b.value;
+    sheenB.error[0] = b.bound;
+  }
+  if (needs.disney) disney = DisneyDiffuseAlbedo(mu, roughness);
+  if (needs.splitSum) split = SplitSum(model, mu, alpha);
+  // The sheen's roughness with the engine's clamp of its alpha.
+  const double sheenRoughness = model.sheenAlpha == PresetAlpha::kSquared
+                                    ? std::max(roughness, std::sqrt(model.sheenAlphaMin))
+                                    : std::max(roughness, model.sheenAlphaMin);
+  if (needs.sheen) sheen = TableNamed("sheen_E").Evaluate(sheenSettings, mu, sheenRoughness);
+  if (needs.f82) f82 = TableNamed("f82").Evaluate(microfacetSettings, mu, std::sqrt(alpha));
+  if (needs.average)
+    average = TableNamed("Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), 0.0);
+  if (needs.glass || needs.glassAverage) {
+    // The engine's own index-matched interface: no lobe, albedo 1.
+    if (std::abs(eta - 1.0) < model.unitEtaWindow) {
+      glass.value[0] = glassAverage.value[0] = 1.0;
+    } else {
+      if (needs.glass)
+        glass = TableNamed("glass_E").Evaluate3D(microfacetSettings, mu, std::sqrt(alpha), eta);
+      if (needs.glassAverage)
+        glassAverage = TableNamed("glass_Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), eta);
+    }
+  }
+  if (needs.spec)
+    spec = TableNamed("spec_E").Evaluate3D(microfacetSettings, mu, std::sqrt(alpha), eta);
+  if (needs.specAverage)
+    specAverage = TableNamed("spec_Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), eta);
+  // The single-valued meanings and the integral each reads.
+  const std::pair<const char *, const PointValue *> kSingle[] = {{"sheen_E", &sheen},
+                                                                 {"f82", &f82},
+                                                                 {"Eavg", &average},
+                                                                 {"sheen_B", &sheenB},
+                                                                 {"disney_diffuse", &disney},
+                                                                 {"glass_E", &glass},
+                                                                 {"glass_Eavg", &glassAverage},
+                                                                 {"spec_E", &spec},
+                                                                 {"spec_Eavg", &specAverage}};
+  for (size_t c = 0; c < texture.channels.size(); ++c) {
+    const PresetChannel &channel = texture.channels[c];
+    double value = 0.0, error = 0.0;
+    if (channel.meaning == "A" || channel.meaning == "B") {
+      const int k = channel.meaning == "A" ? 0 : 1;
+      value = split.value[k];
+      error = split.error[k];
+    } else if (channel.meaning == "E") {
+      value = split.value[0] + split.value[1];
+      error = split.error[0] + split.error[1];
+    } else if (channel.meaning == "fabric_lambert") {
+      // HDRP's FabricLambertNoPI: lerp(1, 1/2, alpha), alpha = roughness^2.
+      value = 1.0 - 0.5 * alpha;
+    } else if (channel.meaning == "one") {
+      value = 1.0;
+    } else if (needs.zeltner && channel.meaning.rfind("zeltner_", 0) == 0) {
+      // The published table, at alpha = the roughness axis.
+      const std::array<double, 3> zeltner = ZeltnerSheenLtc(mu, roughness);
+      value = zeltner[channel.meaning == "zeltner_a" ? 0 : channel.meaning == "zeltner_b" ? 1 : 2];
+    } else if (IsLtcMatrixMeaning(channel.meaning)) {
+      // The fit is the value (its bound 0; what it is worth is the lobe
+      // error that eval --table ltc_ggx states).
+      const int count = texture.axes[static_cast<size_t>(roles.roughness)].count;
+      const LtcMatrix &m =
+          ltc[static_cast<size_t>(axisTexel(roles.mu)) * count + axisTexel(roles.roughness)].minv;
+      value = channel.meaning == "ltc_m00"   ? m.m00
+              : channel.meaning == "ltc_m20" ? m.m20
+              : channel.meaning == "ltc_m02" ? m.m02
+                                             : m.m22;
+    } else if (channel.meaning == "clipped_sphere") {
+      const double u = texture.axes[0].Coordinate(axisTexel(0));
+      const double v = texture.axes.size() > 1 ? texture.axes[1].Coordinate(axisTexel(1)) : 0.0;
+      value = ClippedSphere(2.0 * u - 1.0, v);
+    } else {
+      for (const auto &[meaning, integral] : kSingle)
+        if (channel.meaning == meaning) {
+          value = integral->value[0];
+          error = integral->error[0];
+        }
+    }
+    const double stored = channel.scale * value + channel.offset;
+    values[c] = std::clamp(stored, channel.clampMin, channel.clampMax);
+    errors[c] = std::fabs(channel.scale) * error + std::abs(stored - values[c]);
+  }
+}
+
 }  // namespace
+
+void PresetTexelValues(const PresetTexture &texture, const int index[3], double *values,
+                       double *errors) {
+  const Needs needs = NeedsOf(texture);
+  if (needs.ltc)
+    throw std::invalid_argument(texture.file +
+                                ": its LTC channels are fitted over the whole grid at once, not "
+                                "per texel");
+  TexelChannels(texture, needs, RolesOf(texture, needs), {}, index, values, errors);
+}
 
 Table BakePresetTexture(const PresetTexture &texture, const std::string &presetName,
                         const CancellationToken *cancellation,
                         const std::function<void(double fraction)> &progress) {
-  if (texture.axes.empty() || texture.axes.size() > 3)
-    throw std::invalid_argument(texture.file + ": a preset texture has one to three axes");
   const Needs needs = NeedsOf(texture);
-  int muAxis = -1, roughnessAxis = -1, etaAxis = -1;
-  for (size_t a = 0; a < texture.axes.size(); ++a) {
-    const std::string &quantity = texture.axes[a].quantity;
-    if (quantity == "mu") muAxis = static_cast<int>(a);
-    if (quantity == "roughness") roughnessAxis = static_cast<int>(a);
-    if (quantity == "eta" || quantity == "1/eta") etaAxis = static_cast<int>(a);
-  }
-  const bool averaged = needs.average || needs.glassAverage || needs.specAverage;
-  const bool dielectric = needs.glass || needs.glassAverage || needs.spec || needs.specAverage;
-  if (roughnessAxis < 0 || (muAxis < 0 && !averaged))
-    throw std::invalid_argument(texture.file +
-                                ": a preset texture needs its mu and roughness axes");
-  if (dielectric != (etaAxis >= 0))
-    throw std::invalid_argument(
-        texture.file + ": the dielectric (glass, spec) channels, and only they, take an eta axis");
+  const AxisRoles roles = RolesOf(texture, needs);
 
   Table table;
   table.name = texture.file.substr(0, texture.file.find('.'));
@@ -295,25 +440,9 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
   table.values.assign(table.texelCount() * table.channels, 0.0);
   table.errors.assign(table.values.size(), 0.0);
 
-  const PresetModel &model = texture.model;
   const int width = table.width(), height = table.height(), depth = table.depth();
-  // The texel in memory at (ix, iy, iz) holds the axis texel i = ix, or N -
-  // 1 - ix when the axis runs from u = 1.
-  const auto axisTexel = [](const PresetAxis &axis, int index) {
-    return axis.reversed ? axis.count - 1 - index : index;
-  };
-  // The settings of the tables the channels read: the model's, the same at
-  // every texel.
-  BakeSettings microfacetSettings;
-  microfacetSettings.smith = model.visibility == PresetVisibility::kSeparable
-                                 ? SmithForm::kSeparable
-                                 : SmithForm::kCorrelated;
-  BakeSettings sheenSettings;
-  sheenSettings.sheenVisibility = model.sheenVisibility;
-  sheenSettings.sheenAlpha =
-      model.sheenAlpha == PresetAlpha::kSquared ? SheenAlpha::kSquared : SheenAlpha::kLinear;
   const std::vector<LtcTexel> ltc =
-      needs.ltc ? FitPresetLtc(texture, muAxis, roughnessAxis) : std::vector<LtcTexel>{};
+      needs.ltc ? FitPresetLtc(texture, roles.mu, roles.roughness) : std::vector<LtcTexel>{};
   // One task per row of x; rows of every slice in turn.
   std::mutex progressMutex;
   size_t rowsDone = 0;
@@ -324,121 +453,8 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
           const int iy = row % height, iz = row / height;
           for (int ix = 0; ix < width; ++ix) {
             const int index[3] = {ix, iy, iz};
-            const PresetAxis &ra = texture.axes[static_cast<size_t>(roughnessAxis)];
-            const double roughness = ra.Quantity(axisTexel(ra, index[roughnessAxis]));
-            double mu = 0.0, eta = 1.0;
-            if (muAxis >= 0) {
-              const PresetAxis &ma = texture.axes[static_cast<size_t>(muAxis)];
-              mu = ma.Quantity(axisTexel(ma, index[muAxis]));
-            }
-            if (etaAxis >= 0) {
-              const PresetAxis &ea = texture.axes[static_cast<size_t>(etaAxis)];
-              const double q = ea.Quantity(axisTexel(ea, index[etaAxis]));
-              eta = ea.quantity == "1/eta" ? 1.0 / q : q;
-            }
-            const double alpha = AlphaOf(model.alpha, roughness, model.alphaMin);
-            PointValue split, sheen, sheenB, f82, average, disney, glass, glassAverage, spec,
-                specAverage;
-            if (needs.sheenB) {
-              const double sheenAlpha =
-                  model.sheenAlpha == PresetAlpha::kSquared ? roughness * roughness : roughness;
-              const SheenIntegral b = IntegrateSheenSchlickWeightedAdaptive(
-                  model.sheenVisibility, sheenAlpha, mu, kSheenBTolerance);
-              sheenB.value[0] = b.value;
-              sheenB.error[0] = b.bound;
-            }
-            if (needs.disney) disney = DisneyDiffuseAlbedo(mu, roughness);
-            if (needs.splitSum) split = SplitSum(model, mu, alpha);
-            // The sheen's roughness with the engine's clamp of its alpha.
-            const double sheenRoughness = model.sheenAlpha == PresetAlpha::kSquared
-                                              ? std::max(roughness, std::sqrt(model.sheenAlphaMin))
-                                              : std::max(roughness, model.sheenAlphaMin);
-            if (needs.sheen)
-              sheen = TableNamed("sheen_E").Evaluate(sheenSettings, mu, sheenRoughness);
-            if (needs.f82)
-              f82 = TableNamed("f82").Evaluate(microfacetSettings, mu, std::sqrt(alpha));
-            if (needs.average)
-              average = TableNamed("Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), 0.0);
-            if (needs.glass || needs.glassAverage) {
-              // The engine's own index-matched interface: no lobe, albedo 1.
-              if (std::abs(eta - 1.0) < model.unitEtaWindow) {
-                glass.value[0] = glassAverage.value[0] = 1.0;
-              } else {
-                if (needs.glass)
-                  glass = TableNamed("glass_E").Evaluate3D(microfacetSettings, mu, std::sqrt(alpha),
-                                                           eta);
-                if (needs.glassAverage)
-                  glassAverage =
-                      TableNamed("glass_Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), eta);
-              }
-            }
-            if (needs.spec)
-              spec = TableNamed("spec_E").Evaluate3D(microfacetSettings, mu, std::sqrt(alpha), eta);
-            if (needs.specAverage)
-              specAverage =
-                  TableNamed("spec_Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), eta);
-            // The single-valued meanings and the integral each reads.
-            const std::pair<const char *, const PointValue *> kSingle[] = {
-                {"sheen_E", &sheen},
-                {"f82", &f82},
-                {"Eavg", &average},
-                {"sheen_B", &sheenB},
-                {"disney_diffuse", &disney},
-                {"glass_E", &glass},
-                {"glass_Eavg", &glassAverage},
-                {"spec_E", &spec},
-                {"spec_Eavg", &specAverage}};
-            for (int c = 0; c < table.channels; ++c) {
-              const PresetChannel &channel = texture.channels[static_cast<size_t>(c)];
-              double value = 0.0, error = 0.0;
-              if (channel.meaning == "A" || channel.meaning == "B") {
-                const int k = channel.meaning == "A" ? 0 : 1;
-                value = split.value[k];
-                error = split.error[k];
-              } else if (channel.meaning == "E") {
-                value = split.value[0] + split.value[1];
-                error = split.error[0] + split.error[1];
-              } else if (channel.meaning == "fabric_lambert") {
-                // HDRP's FabricLambertNoPI: lerp(1, 1/2, alpha), alpha = roughness^2.
-                value = 1.0 - 0.5 * alpha;
-              } else if (channel.meaning == "one") {
-                value = 1.0;
-              } else if (needs.zeltner && channel.meaning.rfind("zeltner_", 0) == 0) {
-                // The published table, at alpha = the roughness axis.
-                const std::array<double, 3> zeltner = ZeltnerSheenLtc(mu, roughness);
-                value = zeltner[channel.meaning == "zeltner_a"   ? 0
-                            : channel.meaning == "zeltner_b" ? 1
-                                                             : 2];
-              } else if (IsLtcMatrixMeaning(channel.meaning)) {
-                // The fit is the value (its bound 0; what it is worth is the
-                // lobe error that eval --table ltc_ggx states).
-                const PresetAxis &ma = texture.axes[static_cast<size_t>(muAxis)];
-                const int iMu = axisTexel(ma, index[muAxis]);
-                const int iR = axisTexel(ra, index[roughnessAxis]);
-                const LtcMatrix &m = ltc[static_cast<size_t>(iMu) * ra.count + iR].minv;
-                value = channel.meaning == "ltc_m00"   ? m.m00
-                        : channel.meaning == "ltc_m20" ? m.m20
-                        : channel.meaning == "ltc_m02" ? m.m02
-                                                       : m.m22;
-              } else if (channel.meaning == "clipped_sphere") {
-                const double u = texture.axes[0].Coordinate(axisTexel(texture.axes[0], ix));
-                const double v = texture.axes.size() > 1
-                                     ? texture.axes[1].Coordinate(axisTexel(texture.axes[1], iy))
-                                     : 0.0;
-                value = ClippedSphere(2.0 * u - 1.0, v);
-              } else {
-                for (const auto &[meaning, integral] : kSingle)
-                  if (channel.meaning == meaning) {
-                    value = integral->value[0];
-                    error = integral->error[0];
-                  }
-              }
-              const size_t at = table.index(ix, iy, iz, c);
-              const double stored = channel.scale * value + channel.offset;
-              table.values[at] = std::clamp(stored, channel.clampMin, channel.clampMax);
-              table.errors[at] =
-                  std::fabs(channel.scale) * error + std::abs(stored - table.values[at]);
-            }
+            const size_t at = table.index(ix, iy, iz, 0);
+            TexelChannels(texture, needs, roles, ltc, index, &table.values[at], &table.errors[at]);
           }
         }
         if (progress) {

@@ -9,16 +9,23 @@
 //   const lutbake::CheckOutcome outcome = lutbake::Check(request);
 //   std::cout << outcome.text;
 //
-// Throws UsageError when DIR is not a directory, IoError when its files
+// With a convention (CheckRequest::convention: --as TABLE, --preset NAME
+// and the options of identify.h's ConventionOptions), DIR is one table file
+// of any origin, judged by CheckTableFile (identify.h).
+//
+// Throws UsageError when DIR is not a directory (and no convention is given),
+// UnreadableError when a table file cannot be read, IoError when its files
 // cannot be read at all (an unusable preset.json); a table found wrong is a
 // failed check instead.
 #pragma once
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "lutbake/api/identify.h"
 #include "lutbake/api/presets.h"
 #include "lutbake/validation/check.h"
 
@@ -33,13 +40,18 @@ struct CheckRequest {
   // Fraction of the quadrature reference done (a bake's directory only),
   // from the checking threads one at a time.
   std::function<void(double fraction)> progress;
+  // The convention a single table file is judged under, by option name
+  // ("as", "preset", ...: ConventionOptions); empty values are not given.
+  std::map<std::string, std::string> convention;
 };
 
 struct CheckOutcome {
   // Which of the two: a preset's directory (preset.json) or a bake's.
   bool isPreset = false;
   PresetCheck preset;  // isPreset
-  CheckReport report;  // !isPreset
+  bool isTableFile = false;
+  TableFileOutcome tableFile;  // isTableFile
+  CheckReport report;          // !isPreset
   bool passed = false;
   // `check --json`'s object.
   std::string json;

@@ -91,6 +91,9 @@ struct EvalResult {
   // error (arrays for two channels or more: [A, B]), the fit's measures of a
   // fitted table (lobeError, ...), estimator, samples.
   std::string JsonLine(size_t i) const;
+  // Point i as `eval` prints it: "E   mu 0.5        roughness 0.3        E
+  // 0.97...  error 1e-10  (quadrature)", with its newline.
+  std::string TextLine(size_t i) const;
 };
 
 EvalResult Evaluate(const EvalRequest &request);

@@ -13,6 +13,8 @@ namespace lutbake {
 
 // `lutbake presets --json`: {"presets": [{"name", "engine", "summary", "files"}]}.
 std::string PresetListJson();
+// `lutbake presets`: one line per preset, its name and summary.
+std::string PresetListText();
 
 // What `check` takes from a preset directory's preset.json: the preset it
 // names, and the errorMax stated for each file it lists.

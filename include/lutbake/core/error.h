@@ -17,6 +17,9 @@ class Error : public std::runtime_error {
     kUsage,      // the request itself is wrong: an unknown name, a value out of range
     kRuntime,    // the request is right, the work failed: an unwritable directory, a bad file
     kCancelled,  // the caller's CancellationToken was cancelled
+    // An input file cannot be read as what it was given as: missing,
+    // unreadable, no image of a known format (check FILE --as, identify)
+    kUnreadable,
   };
   Error(Kind kind, const std::string &message) : std::runtime_error(message), kind_(kind) {}
   Kind kind() const noexcept { return kind_; }
@@ -35,6 +38,11 @@ class UsageError : public Error {
 class IoError : public Error {
  public:
   explicit IoError(const std::string &message) : Error(Kind::kRuntime, message) {}
+};
+
+class UnreadableError : public Error {
+ public:
+  explicit UnreadableError(const std::string &message) : Error(Kind::kUnreadable, message) {}
 };
 
 }  // namespace lutbake

@@ -180,4 +180,12 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
                         const CancellationToken *cancellation = nullptr,
                         const std::function<void(double fraction)> &progress = {});
 
+// One texel of BakePresetTexture: the channels (and their bounds) of the
+// texel at memory index (index[0], index[1], index[2]) (unused axes 0). An
+// index outside [0, N) is the axis's end (u clamped to [0, 1]), as a table
+// read one texel off holds there. `values` and `errors` take one entry per
+// channel.
+void PresetTexelValues(const PresetTexture &texture, const int index[3], double *values,
+                       double *errors);
+
 }  // namespace lutbake
