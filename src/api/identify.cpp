@@ -589,7 +589,9 @@ TableFileOutcome Outcome(const std::string &path, const RawImage &image, const C
   o.worstX = s.worstX;
   o.worstY = s.worstY;
   o.worstChannel = s.worstChannel;
-  const auto [i0, i1] = LayoutIndex(c.convention, image, s.worstX, s.worstY);
+  // Named, not a structured binding: C++17 lambdas cannot capture those.
+  const auto worstIndex = LayoutIndex(c.convention, image, s.worstX, s.worstY);
+  const auto i0 = worstIndex.first, i1 = worstIndex.second;
   const auto quantityNamed = [&](const char *name) {
     for (size_t a = 0; a < c.layout.axes.size(); ++a)
       if (c.layout.axes[a].quantity == name) return exact.Quantity(a, a == 0 ? i0 : i1);
