@@ -37,6 +37,7 @@ BakePlan Plan(const PlanRequest &request) {
     };
     merge(&options.defaultIbl, m.ibl, "ibl");
     merge(&options.defaultCompensation, m.compensation, "compensation");
+    merge(&options.areaLights, m.areaLights, "areaLights");
     materials.insert(materials.end(), m.materials.begin(), m.materials.end());
   }
   for (const std::string &path : request.scenes) {

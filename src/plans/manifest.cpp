@@ -184,15 +184,21 @@ Manifest ParseManifest(std::string_view text, const std::string &name) {
   const Json root = json_input::Parse(text, name);
   const Place top{&name, ""};
   json_input::RequireObject(root, top);
-  json_input::OnlyKeys(root, top, {"lighting", "materials"});
+  json_input::OnlyKeys(root, top, {"lighting", "materials", "areaLights"});
   Manifest out;
   out.source = name;
+  out.areaLights = Lighting(root, "areaLights", top);
   if (const Json *l = Member(root, "lighting")) {
     const Place at = top.Child("lighting");
     json_input::RequireObject(*l, at);
-    json_input::OnlyKeys(*l, at, {"ibl", "compensation"});
+    json_input::OnlyKeys(*l, at, {"ibl", "compensation", "areaLights"});
     out.ibl = Lighting(*l, "ibl", at);
     out.compensation = Lighting(*l, "compensation", at);
+    if (const std::optional<bool> inLighting = Lighting(*l, "areaLights", at)) {
+      if (out.areaLights && *out.areaLights != *inLighting)
+        throw InputError(name + ": /areaLights and /lighting/areaLights disagree");
+      out.areaLights = inLighting;
+    }
   }
   if (const Json *list = Member(root, "materials")) {
     const Place at = top.Child("materials");

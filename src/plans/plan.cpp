@@ -110,6 +110,8 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
   // (ndf, smith) -> uses of roughness by compensated / IBL materials.
   using Model = std::pair<NdfKind, SmithForm>;
   std::map<Model, Uses> compensated, ibl;
+  // (ndf, smith) -> roughness of the lit materials, when area lights are asked for.
+  std::map<Model, Uses> area;
   // The parameters of the Favg axes: eta (and k), or F0 and tint (f82).
   std::map<FresnelModel, std::pair<Uses, Uses>> fresnel;
   // (ndf, smith) -> roughness of the IBL-lit materials with the F82-tint Fresnel.
@@ -148,6 +150,8 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
     const Model model{m.ndf, m.smith};
     for (const RoughnessUse &r : m.roughness) {
       if (usesIbl) ibl[model].Add(r.min, r.max), ibl[model].AddMaterial(m.name);
+      if (options.areaLights.value_or(false))
+        area[model].Add(r.min, r.max), area[model].AddMaterial(m.name);
       if (usesCompensation)
         compensated[model].Add(r.min, r.max), compensated[model].AddMaterial(m.name);
     }
@@ -259,6 +263,12 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
     for (const TableDefinition *table : TablesFor(PlanRole::kSheenAlbedoScaling))
       roughnessTable(*table, Model{NdfKind::kGgx, SmithForm::kCorrelated}, sheen, false);
 
+  // Area lights: the LTC fit of each specular lobe, over its roughness (the
+  // sheen's LTC is not a table yet).
+  for (const auto &[model, uses] : area)
+    for (const TableDefinition *table : TablesFor(PlanRole::kAreaLights))
+      roughnessTable(*table, model, uses);
+
   // Rough transmission: over the roughness used, and a listed eta axis at
   // exactly the IORs used, both sides (the third axis of glass_E, the
   // second of glass_Eavg).
@@ -350,6 +360,12 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
          !nothingLit.empty() ? nothingLit
                              : "no material has a sheen layer (KHR_materials_sheen with a "
                                "sheenColorFactor above 0, or a manifest's \"sheenRoughness\")");
+  if (!has(PlanRole::kAreaLights))
+    omit(PlanRole::kAreaLights,
+         !nothingLit.empty() ? nothingLit
+         : options.areaLights.has_value()
+             ? "area lights are off (the manifest's \"areaLights\" sets it false)"
+             : "no manifest asks for area lights (\"areaLights\": true)");
   return plan;
 }
 

@@ -45,6 +45,7 @@ namespace {
 
 class LtcGgx final : public MuRoughnessTable {
  public:
+  PlanRole Role() const override { return PlanRole::kAreaLights; }
   const char *Name() const override { return "ltc_ggx"; }
   uint64_t SeedId() const override { return 14; }
   std::string Summary() const override {

@@ -155,18 +155,60 @@ TEST(Plan, LightingSwitchesTablesOff) {
   EXPECT_NE(Omitted(c, "dfg").find("manifest"), std::string::npos);
 }
 
+// "areaLights": true adds the LTC fit of each lit lobe over its roughness
+// (a variant per model, as for the other tables); without it ltc_ggx is left
+// out and the plan says how to ask for it; the two places that may say it
+// must agree.
+TEST(Plan, AreaLightsAddTheLtcTableOfEachLobe) {
+  const Manifest m = ParseManifest(
+      R"({"areaLights": true, "materials": [
+            {"name": "floor", "roughness": {"min": 0.2, "max": 0.6}},
+            {"name": "chrome", "ndf": "beckmann", "roughness": 0.1}]})",
+      "area.json");
+  ASSERT_EQ(m.areaLights, std::optional<bool>(true));
+  PlanOptions options;
+  options.areaLights = m.areaLights;
+  const BakePlan plan = MakePlan(m.materials, options);
+  const PlannedTable *ggx = Find(plan, "ltc_ggx");
+  const PlannedTable *beckmann = Find(plan, "ltc_ggx_beckmann");
+  ASSERT_NE(ggx, nullptr);
+  ASSERT_NE(beckmann, nullptr);
+  // The roughness axis narrowed to what the materials use.
+  EXPECT_DOUBLE_EQ(ggx->roughness.min, 0.2);
+  EXPECT_DOUBLE_EQ(ggx->roughness.max, 0.6);
+  EXPECT_EQ(ggx->materials, std::vector<std::string>{"floor"});
+  EXPECT_EQ(beckmann->materials, std::vector<std::string>{"chrome"});
+  EXPECT_EQ(beckmann->ndf, NdfKind::kBeckmann);
+
+  const BakePlan without = MakePlan(m.materials, PlanOptions{});
+  EXPECT_EQ(Find(without, "ltc_ggx"), nullptr);
+  EXPECT_NE(Omitted(without, "ltc_ggx").find("\"areaLights\": true"), std::string::npos);
+  PlanOptions off;
+  off.areaLights = false;
+  EXPECT_NE(Omitted(MakePlan(m.materials, off), "ltc_ggx").find("sets it false"),
+            std::string::npos);
+
+  const Manifest inLighting =
+      ParseManifest(R"({"lighting": {"areaLights": true}, "materials": []})", "l.json");
+  EXPECT_EQ(inLighting.areaLights, std::optional<bool>(true));
+  EXPECT_THROW(
+      ParseManifest(R"({"areaLights": true, "lighting": {"areaLights": false}})", "x.json"),
+      InputError);
+}
+
 TEST(Plan, NothingNeededIsSaidSo) {
   for (const char *scene : {"unlit.gltf", "no_lobe.gltf"}) {
     const BakePlan plan = PlanOf({kPlans + scene});
     EXPECT_TRUE(plan.empty()) << scene;
     // E, Eavg, Favg, dfg, sheen_E (issue 14), glass_E, glass_Eavg, f82,
-    // spec_E and spec_Eavg (issue 15).
-    EXPECT_EQ(plan.omitted.size(), 10u) << scene;
+    // spec_E and spec_Eavg (issue 15), ltc_ggx (issue 28).
+    EXPECT_EQ(plan.omitted.size(), 11u) << scene;
     for (const char *name : {"glass_E", "f82", "spec_E", "spec_Eavg"})
       EXPECT_NE(Omitted(plan, name).find("unlit or has no specular lobe"), std::string::npos)
           << name;
     EXPECT_NE(Omitted(plan, "E").find("unlit or has no specular lobe"), std::string::npos);
     EXPECT_NE(Omitted(plan, "sheen_E").find("unlit or has no specular lobe"), std::string::npos);
+    EXPECT_NE(Omitted(plan, "ltc_ggx").find("unlit or has no specular lobe"), std::string::npos);
   }
 }
 
@@ -455,8 +497,9 @@ TEST(Plan, JsonHasTheDocumentedShape) {
     omitted.push_back(o["name"]);
     EXPECT_FALSE(o["reason"].get<std::string>().empty());
   }
-  // No F82 metal, and no coat.
-  EXPECT_EQ(omitted, (std::vector<std::string>{"Favg", "dfg", "f82", "spec_E", "spec_Eavg"}));
+  // No F82 metal, no coat, no area lights.
+  EXPECT_EQ(omitted,
+            (std::vector<std::string>{"Favg", "dfg", "f82", "spec_E", "spec_Eavg", "ltc_ggx"}));
   // Transmission and volume are baked now (issue 15): anisotropy and
   // iridescence remain.
   ASSERT_EQ(j["unsupported"].size(), 2u);

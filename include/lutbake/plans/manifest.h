@@ -3,7 +3,9 @@
 // naming its JSON pointer and the keys accepted there):
 //
 //   {
-//     "lighting": {"ibl": true, "compensation": true},      // optional; both default true
+//     "lighting": {"ibl": true, "compensation": true,       // optional; both default true
+//                  "areaLights": false},                    // optional; true: the LTC tables
+//                                                           //   of the lobes used (ltc_ggx)
 //     "materials": [                                        // optional
 //       {
 //         "name": "car paint",                              // default "materials[i]"
@@ -36,7 +38,8 @@
 //
 // "lighting" applies to every material of the plan, glTF scenes' included,
 // unless a material says otherwise; --no-ibl and --no-compensation on the
-// command line switch a term off for everything.
+// command line switch a term off for everything. "areaLights" may also stand
+// at the top level ({"areaLights": true, "materials": [...]}).
 #pragma once
 
 #include <optional>
@@ -52,6 +55,7 @@ struct Manifest {
   std::string source;
   std::optional<bool> ibl;
   std::optional<bool> compensation;
+  std::optional<bool> areaLights;  // rectangular area lights: the LTC tables
   std::vector<MaterialSpec> materials;
 };
 

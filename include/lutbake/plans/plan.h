@@ -64,6 +64,9 @@ struct PlanOptions {
   // Manifest "lighting": the default for materials that do not say.
   std::optional<bool> defaultIbl;
   std::optional<bool> defaultCompensation;
+  // A manifest's "areaLights": the LTC tables of the lobes the lit
+  // materials use (off unless asked).
+  std::optional<bool> areaLights;
   int maxListedRoughness = kMaxListedRoughness;
   // Texels per axis of the full tables: tableSizes[name], else size, else
   // (0) the table's default (the bake's --size, or 32 / 128).

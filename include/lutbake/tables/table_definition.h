@@ -154,6 +154,9 @@ enum class PlanRole {
   // The F82-tint metal's third split-sum term, specular albedo
   // F0 A + F90 B - a C (f82's C, beside dfg's A and B).
   kF82ImageBasedLighting,
+  // Rectangular area lights by linearly transformed cosines: the LTC fit of
+  // each lobe a lit material uses (ltc_ggx), when a manifest asks for them.
+  kAreaLights,
 };
 
 // What a generated C++ header says about the table besides its axes.
