@@ -223,8 +223,9 @@ std::string ManPage(CLI::App &app) {
   }
   out << ".SH EXAMPLES\n.nf\n"
       << Roff(app.get_footer()) << ".fi\n"
-      << ".SH EXIT STATUS\n0 success, 1 runtime failure, 2 usage error, 128 + N killed by signal "
-         "N.\n";
+      << ".SH EXIT STATUS\n0 success (check and identify: passed, matched), 1 runtime failure "
+         "(check: a check failed; identify: no convention matches), 2 usage error, 3 a table "
+         "file that cannot be read (check FILE --as, identify), 128 + N killed by signal N.\n";
   return out.str();
 }
 
