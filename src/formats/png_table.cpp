@@ -84,6 +84,38 @@ std::string RgbdMapping(int channels) {
          " channel(s) in R, G, B (unused bytes 0)";
 }
 
+// A PNG file of `raw` (rows each led by filter byte 0, samples big-endian)
+// with its IHDR, the tEXt pairs and one deflated IDAT. Colour type from
+// the samples per pixel: 1 grey, 3 RGB, 4 RGBA.
+std::string EncodePng(const std::string &path, int width, int height, int bits, int fileChannels,
+                      const std::string &raw,
+                      const std::vector<std::pair<std::string, std::string>> &text) {
+  uLongf packedSize = compressBound(static_cast<uLong>(raw.size()));
+  std::string packed(packedSize, '\0');
+  if (compress2(reinterpret_cast<Bytef *>(packed.data()), &packedSize,
+                reinterpret_cast<const Bytef *>(raw.data()), raw.size(), 9) != Z_OK)
+    throw IoError("cannot write " + path + ": zlib could not deflate the image");
+  packed.resize(packedSize);
+  std::string file(reinterpret_cast<const char *>(kSignature), 8);
+  std::string ihdr;
+  PutU32(&ihdr, static_cast<uint32_t>(width));
+  PutU32(&ihdr, static_cast<uint32_t>(height));
+  ihdr.push_back(static_cast<char>(bits));
+  ihdr.push_back(fileChannels == 1 ? 0 : fileChannels == 3 ? 2 : 6);  // grey, RGB, RGBA
+  ihdr.append(3, '\0');  // deflate, adaptive filtering, no interlace
+  PutChunk(&file, "IHDR", ihdr);
+  for (const auto &[key, value] : text) {
+    // tEXt: a Latin-1 keyword of 1 to 79 characters, a zero, the text.
+    if (key.empty() || key.size() > 79 || value.find('\0') != std::string::npos)
+      throw IoError("cannot write " + path + ": metadata key '" + key +
+                    "' does not fit a PNG tEXt chunk");
+    PutChunk(&file, "tEXt", key + std::string(1, '\0') + value);
+  }
+  PutChunk(&file, "IDAT", packed);
+  PutChunk(&file, "IEND", "");
+  return file;
+}
+
 class PngWriter final : public TableWriter {
  public:
   explicit PngWriter(ValueType type) : type_(type), bits_(type == ValueType::kUnorm16 ? 16 : 8) {}
@@ -122,21 +154,6 @@ class PngWriter final : public TableWriter {
         }
       }
     }
-    uLongf packedSize = compressBound(static_cast<uLong>(raw.size()));
-    std::string packed(packedSize, '\0');
-    if (compress2(reinterpret_cast<Bytef *>(packed.data()), &packedSize,
-                  reinterpret_cast<const Bytef *>(raw.data()), raw.size(), 9) != Z_OK)
-      throw IoError("cannot write " + path + ": zlib could not deflate the image");
-    packed.resize(packedSize);
-
-    std::string file(reinterpret_cast<const char *>(kSignature), 8);
-    std::string ihdr;
-    PutU32(&ihdr, static_cast<uint32_t>(width));
-    PutU32(&ihdr, static_cast<uint32_t>(height));
-    ihdr.push_back(static_cast<char>(bits_));
-    ihdr.push_back(fileChannels == 1 ? 0 : fileChannels == 3 ? 2 : 6);  // grey, RGB, RGBA
-    ihdr.append(3, '\0');  // deflate, adaptive filtering, no interlace
-    PutChunk(&file, "IHDR", ihdr);
     std::vector<std::pair<std::string, std::string>> metadata = MetadataForStorage(table, type);
     if (rgbd) {
       metadata.emplace_back("channelMapping", RgbdMapping(table.channels));
@@ -144,15 +161,7 @@ class PngWriter final : public TableWriter {
       metadata.emplace_back("quantisationStep", "1/" + std::to_string((1u << bits_) - 1u));
       metadata.emplace_back("channelMapping", ChannelMapping(table.channels));
     }
-    for (const auto &[key, value] : metadata) {
-      // tEXt: a Latin-1 keyword of 1 to 79 characters, a zero, the text.
-      if (key.empty() || key.size() > 79 || value.find('\0') != std::string::npos)
-        throw IoError("cannot write " + path + ": metadata key '" + key +
-                      "' does not fit a PNG tEXt chunk");
-      PutChunk(&file, "tEXt", key + std::string(1, '\0') + value);
-    }
-    PutChunk(&file, "IDAT", packed);
-    PutChunk(&file, "IEND", "");
+    const std::string file = EncodePng(path, width, height, bits_, fileChannels, raw, metadata);
     WriteWholeFile(path, file);
   }
 
@@ -367,19 +376,7 @@ void WriteRgb8Png(const std::string &path, int width, int height, const std::vec
     raw.append(reinterpret_cast<const char *>(rgb.data()) + static_cast<size_t>(y) * width * 3,
                static_cast<size_t>(width) * 3);
   }
-  uLongf packedSize = compressBound(static_cast<uLong>(raw.size()));
-  std::string packed(packedSize, '\0');
-  if (compress2(reinterpret_cast<Bytef *>(packed.data()), &packedSize,
-                reinterpret_cast<const Bytef *>(raw.data()), raw.size(), 9) != Z_OK)
-    throw IoError("cannot write " + path + ": zlib could not deflate the image");
-  packed.resize(packedSize);
-  std::string file(reinterpret_cast<const char *>(kSignature), 8), ihdr;
-  PutU32(&ihdr, static_cast<uint32_t>(width));
-  PutU32(&ihdr, static_cast<uint32_t>(height));
-  ihdr += std::string("\x08\x02\0\0\0", 5);  // 8 bits, RGB, deflate, no filter, no interlace
-  PutChunk(&file, "IHDR", ihdr);
-  PutChunk(&file, "IDAT", packed);
-  PutChunk(&file, "IEND", "");
+  const std::string file = EncodePng(path, width, height, 8, 3, raw, {});
   // A temporary beside it, renamed over it: never a half-written picture.
   const std::string temporary = path + ".lutbake-tmp";
   WriteWholeFile(temporary, file);

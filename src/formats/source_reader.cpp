@@ -33,21 +33,9 @@ long PositiveMetadata(const Table &table, const std::string &path, const char *k
 }  // namespace
 
 Table ReadSourceTable(const std::string &path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw IoError("cannot open " + path);
-  std::stringstream buffer;
-  buffer << file.rdbuf();
-  const std::string text = buffer.str();
-  if (text.size() > (size_t{1} << 30)) throw IoError(path + ": over 1 GiB");
+  const std::string text = source_text::ReadText(path, size_t{1} << 30);
   Table table;
-  std::istringstream lines(text);
-  for (std::string line; std::getline(lines, line);) {
-    if (line.rfind("//", 0) != 0 || line == "//") break;
-    if (line.rfind("//   ", 0) != 0) continue;
-    const size_t colon = line.find(": ");
-    if (colon == std::string::npos) continue;
-    table.metadata.emplace_back(line.substr(5, colon - 5), line.substr(colon + 2));
-  }
+  table.metadata = source_text::HeaderMetadata(text);
   const std::string *storage = table.FindMetadata("errorStorage");
   if (!storage || (*storage != "float32" && *storage != "half"))
     throw IoError(path + ": metadata errorStorage missing or not float32 or half");

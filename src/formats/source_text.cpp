@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
+#include "lutbake/core/error.h"
 #include "lutbake/tables/table_definition.h"
 
 namespace lutbake {
@@ -288,6 +291,32 @@ std::string Swizzle(int channels) {
     case 3: return ".xyz";
     default: return "";
   }
+}
+
+std::string ReadText(const std::string &path, size_t maxBytes) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw IoError("cannot open " + path);
+  std::stringstream buffer;
+  buffer << file.rdbuf();
+  std::string text = buffer.str();
+  if (text.size() > maxBytes)
+    throw IoError(path + ": over " +
+                  (maxBytes >= (size_t{1} << 30) ? std::to_string(maxBytes >> 30) + " GiB"
+                                                 : std::to_string(maxBytes >> 20) + " MiB"));
+  return text;
+}
+
+Metadata HeaderMetadata(const std::string &text) {
+  Metadata metadata;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("//", 0) != 0 || line == "//") break;
+    if (line.rfind("//   ", 0) != 0) continue;
+    const size_t colon = line.find(": ");
+    if (colon == std::string::npos) continue;
+    metadata.emplace_back(line.substr(5, colon - 5), line.substr(colon + 2));
+  }
+  return metadata;
 }
 
 }  // namespace source_text

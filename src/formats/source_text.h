@@ -17,6 +17,14 @@ namespace lutbake::source_text {
 
 using Metadata = std::vector<std::pair<std::string, std::string>>;
 
+// The whole text of the file at `path`; an IoError when it cannot be opened
+// or holds more than `maxBytes` ("over 256 MiB").
+std::string ReadText(const std::string &path, size_t maxBytes);
+
+// The "//   key: value" lines of the comment block that opens a source file
+// lutbake wrote (WriteMetadataComment), in order.
+Metadata HeaderMetadata(const std::string &text);
+
 // The comment lines that bracket the values (ReadSourceTable looks for them).
 inline constexpr const char *kValuesBegin = "// lutbake-values-begin";
 inline constexpr const char *kValuesEnd = "// lutbake-values-end";

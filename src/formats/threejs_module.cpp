@@ -182,21 +182,9 @@ std::vector<float> ArrayNamed(const std::string &path, const std::string &text,
 }  // namespace
 
 Table ReadThreejsLtcModule(const std::string &path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw IoError("cannot open " + path);
-  std::stringstream buffer;
-  buffer << file.rdbuf();
-  const std::string text = buffer.str();
-  if (text.size() > (size_t{1} << 28)) throw IoError(path + ": over 256 MiB");
+  const std::string text = source_text::ReadText(path, size_t{1} << 28);
   Table table;
-  std::istringstream lines(text);
-  for (std::string line; std::getline(lines, line);) {
-    if (line.rfind("//", 0) != 0 || line == "//") break;
-    if (line.rfind("//   ", 0) != 0) continue;
-    const size_t colon = line.find(": ");
-    if (colon != std::string::npos)
-      table.metadata.emplace_back(line.substr(5, colon - 5), line.substr(colon + 2));
-  }
+  table.metadata = source_text::HeaderMetadata(text);
   const auto count = [&](const char *key) {
     const std::string *v = table.FindMetadata(key);
     const long n = v ? std::strtol(v->c_str(), nullptr, 10) : 0;
