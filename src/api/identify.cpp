@@ -571,10 +571,8 @@ void WriteErrorImage(const std::string &path, const RawImage &image,
   WriteRgb8Png(path, image.width, image.height, rgb);
 }
 
-// The outcome of `candidate` over `texels` (all, or a grid of `gridNote`).
-TableFileOutcome Outcome(const std::string &path, const RawImage &image, const Candidate &c,
-                         const ExactValues &exact, const Score &s, const std::string &smithOfLayout,
-                         const std::string &gridNote) {
+// An outcome that so far says only which file it judged.
+TableFileOutcome FileOutcome(const std::string &path, const RawImage &image) {
   TableFileOutcome o;
   o.path = path;
   o.format = image.format;
@@ -582,6 +580,14 @@ TableFileOutcome Outcome(const std::string &path, const RawImage &image, const C
   o.width = image.width;
   o.height = image.height;
   o.channels = image.channels;
+  return o;
+}
+
+// The outcome of `candidate` over `texels` (all, or a grid of `gridNote`).
+TableFileOutcome Outcome(const std::string &path, const RawImage &image, const Candidate &c,
+                         const ExactValues &exact, const Score &s, const std::string &smithOfLayout,
+                         const std::string &gridNote) {
+  TableFileOutcome o = FileOutcome(path, image);
   o.convention = c.convention;
   o.maxError = s.max;
   o.rmsError = s.rms();
@@ -845,13 +851,7 @@ TableFileOutcome IdentifyTable(const TableFileRequest &request) {
     }
   }
   if (tried.empty()) {
-    TableFileOutcome o;
-    o.path = request.path;
-    o.format = raw.format;
-    o.storage = raw.storage;
-    o.width = raw.width;
-    o.height = raw.height;
-    o.channels = raw.channels;
+    TableFileOutcome o = FileOutcome(request.path, raw);
     o.sentence = "no known convention matches: " + raw.format + " " + std::to_string(raw.width) +
                  " x " + std::to_string(raw.height) + " with " + std::to_string(raw.channels) +
                  " channel(s) fits no known layout's size and channels" +
