@@ -14,9 +14,7 @@ namespace {
 // 2 t exp(-t^2): beyond t = 40 it is below 1e-690, so the range is cut there.
 constexpr double kBeckmannSlopeCut = 40.0;
 
-// Initial subdivisions: the grazing features (theta_max ~ alpha near
-// phi = pi) are narrow, and a single 15-point rule can step over them.
-constexpr int kOuterUniformIntervals = 4;
+// Initial inner subdivision, graded toward v_max (InnerBreaks).
 constexpr double kInnerBreakFractions[] = {0.5, 0.75, 0.875};
 
 struct InnerSetup {
@@ -74,7 +72,12 @@ std::array<double, N> InnerIntegrand(const Ndf &ndf, SmithForm smith, const Inne
 // of width ~mu_o around phi = pi/2 (a jump at mu_o = 0), and for
 // mu_o < alpha theta_max crosses the NDF's width alpha at |phi - pi/2| ~
 // mu_o / alpha. Breaks at pi/2 +- mu_o 4^k grade the start toward both
-// scales; pi/2 itself is always a break.
+// scales; pi/2 itself is always a break. Nothing else is: a uniform start
+// of 4 intervals a side (once here) cost 1.7x the evaluations over the
+// 128^2 texels of dfg at tolerance 1e-8, and the largest deviation from a
+// 1e-13 reference there was 1.1e-8 either way; without it, every value at
+// mu_o from 1e-12 to 1 and alpha from 1e-12 to 1 (GGX and Beckmann, either
+// Smith form, tolerances 1e-8 and 1e-10) stayed within its stated bound.
 std::vector<double> OuterBreaks(double mu_o) {
   std::vector<double> below, breaks;
   // The grading starts at mu_o itself (a floor of 1e-6 left mu_o = 1e-12,
@@ -85,15 +88,9 @@ std::vector<double> OuterBreaks(double mu_o) {
   constexpr double kSmallestGrading = 1e-200;
   for (double d = std::max(mu_o, kSmallestGrading); d < 0.4 * kPi; d *= 4.0) below.push_back(d);
   breaks.push_back(0.0);
-  for (int k = 1; k < kOuterUniformIntervals; ++k)
-    if (0.5 * kPi * k / kOuterUniformIntervals < 0.5 * kPi - below.back())
-      breaks.push_back(0.5 * kPi * k / kOuterUniformIntervals);
   for (auto it = below.rbegin(); it != below.rend(); ++it) breaks.push_back(0.5 * kPi - *it);
   breaks.push_back(0.5 * kPi);
   for (double d : below) breaks.push_back(0.5 * kPi + d);
-  for (int k = 1; k < kOuterUniformIntervals; ++k)
-    if (0.5 * kPi * k / kOuterUniformIntervals > below.back())
-      breaks.push_back(0.5 * kPi + 0.5 * kPi * k / kOuterUniformIntervals);
   breaks.push_back(kPi);
   return breaks;
 }
