@@ -46,7 +46,14 @@ BakePlan Plan(const PlanRequest &request) {
   }
   options.ibl = !request.noIbl;
   options.compensation = !request.noCompensation;
-  return MakePlan(materials, options);
+  BakePlan plan = MakePlan(materials, options);
+  if (request.estimate) {
+    std::vector<EstimatedTable> tables;
+    for (const PlannedTable &t : plan.tables)
+      tables.push_back({t.definition, PlannedSettings(t, BakeSettings{}), t.x, t.y, t.z});
+    plan.estimate = EstimateBake(tables);
+  }
+  return plan;
 }
 
 }  // namespace lutbake

@@ -256,17 +256,19 @@ void ValidateTableNames(const BakeRequest &r) {
   }
 }
 
-std::string PresetListText() {
+std::string PresetListText(bool estimate) {
   std::string text;
   for (const Preset *preset : AllPresets()) {
     char name[32];
     std::snprintf(name, sizeof name, "%-22s ", preset->name.c_str());
     text += name + preset->summary + "\n";
+    if (estimate)
+      text += std::string(23, ' ') + "bake: " + DescribeEstimate(EstimatePresetBake(*preset)) + "\n";
   }
   return text;
 }
 
-std::string PresetListJson() {
+std::string PresetListJson(bool estimate) {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const Preset *preset : AllPresets()) {
     nlohmann::ordered_json p;
@@ -276,6 +278,14 @@ std::string PresetListJson() {
     nlohmann::ordered_json files = nlohmann::ordered_json::array();
     for (const PresetTexture &t : preset->textures) files.push_back(t.file);
     p["files"] = files;
+    if (estimate) {
+      const BakeEstimate e = EstimatePresetBake(*preset);
+      p["estimate"] = {{"seconds", e.seconds},
+                       {"cpuSeconds", e.cpuSeconds},
+                       {"threads", e.threads},
+                       {"texels", e.texels},
+                       {"timedTexels", e.timedTexels}};
+    }
     list.push_back(p);
   }
   return nlohmann::ordered_json({{"presets", list}}).dump(2);

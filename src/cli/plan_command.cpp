@@ -43,6 +43,7 @@ int RunPlan(const PlanCommandOptions &o) {
   request.noIbl = o.scene.noIbl;
   request.noCompensation = o.scene.noCompensation;
   request.size = o.size;
+  request.estimate = true;
   return RunLibraryCall("plan", "", [&] {
     const BakePlan plan = Plan(request);
     std::cout << (o.json ? PlanJson(plan) + "\n" : DescribePlan(plan));

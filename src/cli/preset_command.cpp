@@ -12,7 +12,7 @@ void SetupPresetsCommand(CLI::App &app, bool &json) {
 }
 
 int RunPresets(bool json) {
-  std::cout << (json ? PresetListJson() + "\n" : PresetListText());
+  std::cout << (json ? PresetListJson(true) + "\n" : PresetListText(true));
   return 0;
 }
 

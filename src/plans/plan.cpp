@@ -430,6 +430,12 @@ std::string PlanJson(const BakePlan &plan) {
     j["materials"] = t.materials;
     out["tables"].push_back(j);
   }
+  if (plan.estimate)
+    out["estimate"] = {{"seconds", plan.estimate->seconds},
+                       {"cpuSeconds", plan.estimate->cpuSeconds},
+                       {"threads", plan.estimate->threads},
+                       {"texels", plan.estimate->texels},
+                       {"timedTexels", plan.estimate->timedTexels}};
   out["omitted"] = Json::array();
   for (const OmittedTable &o : plan.omitted)
     out["omitted"].push_back({{"name", o.name}, {"reason", o.reason}});
@@ -517,6 +523,8 @@ std::string DescribePlan(const BakePlan &plan) {
     if (!t.z.name.empty()) s << "\n    " << ShortAxis(t.z);
     s << "\n    for " << JoinNames(t.materials) << "\n";
   }
+  if (plan.estimate && !plan.tables.empty())
+    s << "estimated bake: " << DescribeEstimate(*plan.estimate) << "\n";
   if (!plan.omitted.empty()) s << "left out:\n";
   for (const OmittedTable &o : plan.omitted) s << "  " << o.name << ": " << o.reason << "\n";
   if (!plan.unsupported.empty()) s << "unsupported (needs tables lutbake does not bake):\n";

@@ -482,4 +482,31 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
   return table;
 }
 
+BakeEstimate EstimatePresetBake(const Preset &preset, double secondsPerTexture) {
+  std::vector<EstimatedWork> work;
+  for (const PresetTexture &texture : preset.textures) {
+    EstimatedWork w;
+    for (size_t a = 0; a < texture.axes.size() && a < 3; ++a) w.counts[a] = texture.axes[a].count;
+    if (!NeedsOf(texture).ltc) {
+      w.evaluateTexel = [&texture](int i, int j, int k) {
+        const int index[3] = {i, j, k};
+        double values[8], errors[8];
+        PresetTexelValues(texture, index, values, errors);
+      };
+    } else {
+      PresetTexture small = texture;
+      w.texelsPerCall = 1;
+      for (PresetAxis &a : small.axes) {
+        a.count = std::min(a.count, 2);
+        w.texelsPerCall *= static_cast<size_t>(a.count);
+      }
+      w.evaluateTexel = [small, name = preset.name](int, int, int) {
+        (void)BakePresetTexture(small, name);
+      };
+    }
+    work.push_back(std::move(w));
+  }
+  return EstimateWork(work, secondsPerTexture);
+}
+
 }  // namespace lutbake

@@ -684,5 +684,23 @@ TEST(PlanBake, NothingNeededBakesNothing) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+TEST(Plan, CarriesABakeEstimateOnlyWhenAsked) {
+  PlanRequest request;
+  request.scenes = {kPlans + "listed.gltf", kPlans + "glass.gltf"};
+  const BakePlan plain = Plan(request);
+  EXPECT_FALSE(plain.estimate.has_value());
+  EXPECT_FALSE(nlohmann::json::parse(PlanJson(plain)).contains("estimate"));
+  request.estimate = true;
+  const BakePlan timed = Plan(request);
+  ASSERT_TRUE(timed.estimate.has_value());
+  size_t texels = 0;
+  for (const PlannedTable &t : timed.tables)
+    texels += static_cast<size_t>(t.x.count) * t.y.count * t.z.count;
+  EXPECT_EQ(timed.estimate->texels, texels);
+  const auto j = nlohmann::json::parse(PlanJson(timed));
+  EXPECT_EQ(j["estimate"]["texels"].get<size_t>(), texels);
+  EXPECT_NE(DescribePlan(timed).find("estimated bake: "), std::string::npos);
+}
+
 }  // namespace
 }  // namespace lutbake

@@ -71,6 +71,27 @@ TEST(Presets, EveryEngineOfTheIssueIsListed) {
     EXPECT_NE(std::find(names.begin(), names.end(), p->name), names.end()) << p->name;
 }
 
+// The estimate of a preset bake counts every texel of its textures, times
+// at least one texel of each, and the listing carries it.
+TEST(Presets, EstimateCountsEveryTexelOfEveryTexture) {
+  for (const char *name : {"filament", "cycles", "threejs-ltc"}) {
+    const Preset &preset = *FindPreset(name);
+    size_t texels = 0;
+    for (const PresetTexture &t : preset.textures) {
+      size_t n = 1;
+      for (const PresetAxis &a : t.axes) n *= static_cast<size_t>(a.count);
+      texels += n;
+    }
+    const BakeEstimate e = EstimatePresetBake(preset);
+    EXPECT_EQ(e.texels, texels) << name;
+    EXPECT_GE(e.timedTexels, preset.textures.size()) << name;
+    EXPECT_TRUE(std::isfinite(e.seconds) && e.seconds > 0.0) << name;
+  }
+  const nlohmann::json listed = nlohmann::json::parse(PresetListJson(true));
+  for (const auto &p : listed["presets"]) EXPECT_GT(p["estimate"]["texels"].get<size_t>(), 0u);
+  EXPECT_FALSE(nlohmann::json::parse(PresetListJson())["presets"][0].contains("estimate"));
+}
+
 // Cycles' table_ggx_E (2^23 samples, 6 decimals) at its own edge texels, and
 // the independent quadrature (1e-10) at exactly those points.
 TEST(Presets, CyclesEdgeTexelsMatchCyclesAndTheReference) {

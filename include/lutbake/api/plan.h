@@ -15,6 +15,7 @@ struct PlanRequest {
   bool noIbl = false;                  // leave out dfg (and f82)
   bool noCompensation = false;         // leave out the energy-compensation tables
   int size = 0;                        // texels per axis of the full tables; 0: defaults
+  bool estimate = false;               // time a sample of texels: BakePlan::estimate
 };
 
 // Reads every scene and manifest and makes the plan. Throws UsageError when

@@ -11,10 +11,13 @@
 
 namespace lutbake {
 
-// `lutbake presets --json`: {"presets": [{"name", "engine", "summary", "files"}]}.
-std::string PresetListJson();
-// `lutbake presets`: one line per preset, its name and summary.
-std::string PresetListText();
+// `lutbake presets --json`: {"presets": [{"name", "engine", "summary", "files"}]},
+// with estimate: each preset's "estimate" {"seconds", "cpuSeconds",
+// "threads", "texels", "timedTexels"} (EstimatePresetBake).
+std::string PresetListJson(bool estimate = false);
+// `lutbake presets`: one line per preset, its name and summary, and with
+// estimate a second line with how long baking it will take.
+std::string PresetListText(bool estimate = false);
 
 // What `check` takes from a preset directory's preset.json: the preset it
 // names, and the errorMax stated for each file it lists.

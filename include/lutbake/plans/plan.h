@@ -51,6 +51,7 @@
 #include <vector>
 
 #include "lutbake/plans/material.h"
+#include "lutbake/tables/bake_estimate.h"
 #include "lutbake/tables/bake.h"
 
 namespace lutbake {
@@ -113,6 +114,9 @@ struct BakePlan {
   // Favg is omitted because every compensated material uses Schlick: a
   // header bake writes Favg.h with the closed form instead of a table.
   bool schlickFavgFunction = false;
+  // How long baking it will take (lutbake::Plan with PlanRequest::estimate;
+  // bake_estimate.h): printed by DescribePlan and PlanJson when present.
+  std::optional<BakeEstimate> estimate;
   bool empty() const { return tables.empty(); }
 };
 

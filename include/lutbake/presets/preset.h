@@ -21,6 +21,7 @@
 
 #include "lutbake/core/cancellation.h"
 #include "lutbake/models/sheen.h"
+#include "lutbake/tables/bake_estimate.h"
 #include "lutbake/tables/settings.h"
 #include "lutbake/tables/storage.h"
 #include "lutbake/tables/table.h"
@@ -187,5 +188,12 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
 // channel.
 void PresetTexelValues(const PresetTexture &texture, const int index[3], double *values,
                        double *errors);
+
+// How long `bake --preset` will take (bake_estimate.h): a few texels of
+// each texture timed; a texture with LTC channels, fitted over its whole
+// grid at once, by baking it on 2 texels per axis. No more texels of a
+// texture are timed once they have taken secondsPerTexture (the listing of
+// all presets stays near a second).
+BakeEstimate EstimatePresetBake(const Preset &preset, double secondsPerTexture = 0.05);
 
 }  // namespace lutbake
