@@ -224,8 +224,22 @@ TEST(ShaderCode, EmitsOnlyTheFunctionsOfTheBakedTables) {
   WriteShaderCode((dir / "a.glsl").string(), ShaderLanguage::kGlsl, justE, {});
   const std::string a = ReadText(dir / "a.glsl");
   EXPECT_NE(a.find("float lutbake_sample_E("), std::string::npos);
-  for (const char *absent : {"lutbake_f_ms", "lutbake_specular_albedo", "lutbake_sheen", "f82"})
+  for (const char *absent : {"lutbake_f_ms", "lutbake_specular_albedo", "lutbake_sheen", "f82",
+                             "lutbake_ltc", "lutbake_rect_light"})
     EXPECT_EQ(a.find(absent), std::string::npos) << absent;
+  // ltc_ggx alone: its two lookups (channels 0-3 and 4-5, no six-channel
+  // one) and the area-light functions, nothing of the other tables.
+  WriteShaderCode((dir / "c.glsl").string(), ShaderLanguage::kGlsl, {Tables().back()}, {});
+  const std::string c = ReadText(dir / "c.glsl");
+  for (const char *present :
+       {"vec4 lutbake_sample_ltc_ggx_ch0_3(highp sampler2D ltc_ggx_ch0_3_texture, float mu",
+        "vec2 lutbake_sample_ltc_ggx_ch4_5(", "float lutbake_ltc_edge(",
+        "float lutbake_ltc_polygon(", "float lutbake_ltc_rect_form_factor(",
+        "float lutbake_rect_light_diffuse(", "vec3 lutbake_rect_light_ltc_ggx(",
+        "float lutbake_rect_light_ltc_ggx_f1("})
+    EXPECT_NE(c.find(present), std::string::npos) << present;
+  for (const char *absent : {"lutbake_sample_ltc_ggx(", "vec6", "lutbake_f_ms", "lutbake_sheen"})
+    EXPECT_EQ(c.find(absent), std::string::npos) << absent;
   // dfg without f82: the split sum, no F82 term.
   WriteShaderCode((dir / "b.glsl").string(), ShaderLanguage::kGlsl, {Tables()[2]}, {});
   const std::string b = ReadText(dir / "b.glsl");
