@@ -161,7 +161,8 @@ void ValidateApplicability(const BakeRequest &r) {
   for (const auto &[option, given] : sampling)
     if (given) RequireTableUsing(asked, asText, option, "", IsSampled);
   // A table of more than two channels (ltc_ggx) goes only into the formats
-  // that hold them, and has no shader lookup.
+  // that hold them; its shader lookups read it as textures of four channels
+  // each (shader_code.cpp).
   for (const TableDefinition *table : asked) {
     std::vector<std::string> holding;
     for (const TableFormat &f : AllFormats())
@@ -171,9 +172,6 @@ void ValidateApplicability(const BakeRequest &r) {
         throw UsageError("--format " + name + " holds at most " + std::to_string(f->maxChannels) +
                          " channels; " + table->Name() + " has " +
                          std::to_string(table->Channels()) + ": use " + JoinList(holding));
-    if (!r.shaders.empty() && table->Channels() > 2)
-      throw UsageError("--shader does not apply to " + std::string(table->Name()) + " (" +
-                       std::to_string(table->Channels()) + " channels)");
   }
 }
 

@@ -33,11 +33,16 @@
 //                         lutbake_favg_schlick, lutbake_ms_albedo and
 //                         lutbake_f_ms_E(...) from the textures
 //   sheen (sheen_E):      lutbake_sheen_albedo_scaling(sheenColor, E[, E_l])
+//   area lights (ltc_ggx): lutbake_rect_light_T(...) and _f1, the LTC integral
+//                         of a rectangular light (ltc_area_light_code.cpp);
+//                         a table of six channels is read as two textures,
+//                         channels 0-3 (RGBA) and 4-5 (RG)
 // with the formulas of the C++ headers (kulla_conty.h, f82.h, sheen_E.h).
 #include <algorithm>
 #include <sstream>
 
 #include "file_io.h"
+#include "ltc_area_light_code.h"
 #include "lutbake/formats/source_formats.h"
 #include "lutbake/tables/table_definition.h"
 #include "source_text.h"
@@ -65,9 +70,14 @@ std::string AxisLine(const Axis &axis) {
          std::to_string(axis.count) + " texels";
 }
 
-std::string SampleFunction(const Dialect &d, const Table &table) {
-  const std::string name = table.Name(), tex = name + "_texture";
-  const int c = table.channels;
+// The lookup of channels [first, first + c) of `table` in one texture; for
+// a table of more than four channels (ltc_ggx: six) one per four channels,
+// named lutbake_sample_T_ch<first>_<last> with texture T_ch<first>_<last>_texture.
+std::string SampleFunction(const Dialect &d, const Table &table, int first, int c) {
+  const std::string name = table.channels <= 4 ? table.Name()
+                                               : table.Name() + "_ch" + std::to_string(first) +
+                                                     "_" + std::to_string(first + c - 1);
+  const std::string tex = name + "_texture";
   const std::string F = d.Float(), V = d.Float(c), F2 = d.Float(2);
   const std::vector<std::string> axes = AxisParams(table);
   Params params = d.TextureParams(tex);
@@ -79,8 +89,11 @@ std::string SampleFunction(const Dialect &d, const Table &table) {
   if (table.is3D()) comment += "\n//   z: " + AxisLine(table.z) + ", slices stacked along y";
   std::string channels;
   const std::vector<std::string> meanings = table.definition->ChannelMeanings();
-  for (size_t i = 0; i < meanings.size(); ++i)
-    channels += (i ? ", " : "") + std::string(1, "xyzw"[i]) + " = " + meanings[i];
+  for (int i = 0; i < c && first + i < static_cast<int>(meanings.size()); ++i)
+    channels += (i ? ", " : "") + std::string(1, "xyzw"[i]) + " = " + meanings[first + i];
+  if (table.channels > 4)
+    channels += " (channels " + std::to_string(first) + " to " + std::to_string(first + c - 1) +
+                " of " + table.Name() + ", uploaded as this texture's components)";
   comment += "\n//   texture " + std::to_string(table.width()) + " x " +
              std::to_string(table.height() * table.depth()) + ", returns " + channels + "\n";
   body += d.Let(F, "u", TextureCoordinate(d, table.x, axes[0]));
@@ -146,7 +159,9 @@ void WriteShaderCode(const std::string &path, ShaderLanguage language,
     out << "// GLSL ES 3.00 (WebGL2) or 4.50: include after '#version' and\n"
            "// 'precision highp float;'.\n";
   out << "\n" << d.Prologue();
-  for (const Table &t : tables) out << SampleFunction(d, t);
+  for (const Table &t : tables)
+    for (int first = 0; first < t.channels; first += 4)
+      out << SampleFunction(d, t, first, std::min(4, t.channels - first));
 
   // Split sum.
   const TableDefinition *dfg = FindDefinition(tables, PlanRole::kImageBasedLighting);
@@ -257,6 +272,14 @@ void WriteShaderCode(const std::string &path, ShaderLanguage language,
                       {{F3, "sheenColor"}, {F, "E_v"}, {F, "E_l"}},
                       "  return min(lutbake_sheen_albedo_scaling(sheenColor, E_v),\n"
                       "             lutbake_sheen_albedo_scaling(sheenColor, E_l));\n");
+  }
+  // Rectangular area lights: every six-channel LTC table in the set.
+  bool ltcCore = false;
+  for (const Table &t : tables) {
+    if (!t.definition || t.definition->Role() != PlanRole::kAreaLights || t.channels != 6) continue;
+    if (!ltcCore) out << LtcPolygonFunctions(d);
+    ltcCore = true;
+    out << LtcRectangleFunctions(d, t);
   }
   WriteWholeFile(path, out.str());
 }
