@@ -14,6 +14,9 @@ namespace lutbake {
 
 namespace {
 
+// The table whose report is a lobe error map (ltc_report.h).
+constexpr const char *kLtcReportTable = "ltc_ggx";
+
 void CheckNames(const std::string &option, const std::vector<std::string> &given,
                 const std::vector<std::string> &accepted) {
   for (const std::string &name : given)
@@ -28,7 +31,8 @@ ReportSettings SettingsOf(const ReportRequest &r) {
   if (r.tables) {
     CheckNames("tables", *r.tables, ReportTableNames());
     settings.tables.clear();
-    for (const std::string &name : *r.tables) settings.tables.push_back(&TableNamed(name));
+    for (const std::string &name : *r.tables)
+      if (TableNamed(name).Sampled()) settings.tables.push_back(&TableNamed(name));
   }
   if (r.estimators) {
     CheckNames("estimators", *r.estimators, EstimatorNames());
@@ -65,19 +69,45 @@ std::vector<std::string> ReportTableNames() {
   std::vector<std::string> names;
   for (const TableDefinition *table : AllTables())
     if (table->Sampled()) names.push_back(table->Name());
+  names.push_back(kLtcReportTable);
   return names;
 }
 
 ReportOutcome Report(const ReportRequest &r) {
   const ReportSettings settings = SettingsOf(r);
+  const bool ltc = r.tables && std::find(r.tables->begin(), r.tables->end(), kLtcReportTable) !=
+                                   r.tables->end();
+  if (!r.ltcReference.empty() && !ltc)
+    throw UsageError("--ltc-reference " + r.ltcReference +
+                     " measures ltc_code's table beside ltc_ggx; add ltc_ggx to --tables");
+  if (!r.ltcReference.empty() && settings.ndf != NdfKind::kGgx)
+    throw UsageError("--ltc-reference " + r.ltcReference +
+                     ": ltc_code's table is of GGX; the report measures " +
+                     std::string(ToString(settings.ndf)));
   OutputTransaction output(r.outputDirectory);
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
                                   static_cast<size_t>(ThreadCount(r.threads)));
   ReportOutcome outcome;
-  outcome.rows = RunReport(settings, r.progress);
-  WriteText(output, "report.csv", ReportCsv(outcome.rows));
-  WriteText(output, "report.md", ReportMarkdown(settings, outcome.rows));
-  WriteText(output, "report.svg", ReportSvg(settings, outcome.rows));
+  std::string markdown;
+  if (!settings.tables.empty()) {
+    outcome.rows = RunReport(settings, r.progress);
+    WriteText(output, "report.csv", ReportCsv(outcome.rows));
+    WriteText(output, "report.svg", ReportSvg(settings, outcome.rows));
+    markdown = ReportMarkdown(settings, outcome.rows);
+  }
+  if (ltc) {
+    if (r.progress) r.progress("ltc_ggx: fitting the table and measuring its lobe error");
+    BakeSettings model;
+    model.ndf = settings.ndf;
+    model.smith = settings.smith;
+    const Table table = BakeTable(TableNamed(kLtcReportTable), model);
+    if (r.cancellation) r.cancellation->ThrowIfCancelled();
+    const LtcErrorMap map = MeasureLtcErrorMap(table, settings.ndf, settings.smith, r.ltcReference);
+    WriteText(output, "ltc_error.csv", LtcErrorCsv(map));
+    WriteText(output, "ltc_error.svg", LtcErrorSvg(map));
+    markdown += LtcErrorMarkdown(map);
+  }
+  WriteText(output, "report.md", markdown);
   output.Commit(r.cancellation);
   outcome.files = output.files();
   return outcome;

@@ -15,7 +15,8 @@ void SetupReportCommand(CLI::App &app, ReportOptions &o) {
       ->required()
       ->type_name("DIR");
   app.add_option("--tables", o.tables,
-                 "Tables to measure (Favg has no sampled estimator: it is always quadrature)")
+                 "Tables to measure (Favg has no sampled estimator: it is always quadrature; "
+                 "ltc_ggx: its lobe error map, ltc_error.csv and .svg)")
       ->capture_default_str()
       ->check(ListOf(ReportTableNames()));
   app.add_option("--estimators", o.estimators, "Estimators to compare")
@@ -31,6 +32,10 @@ void SetupReportCommand(CLI::App &app, ReportOptions &o) {
       ->capture_default_str()
       ->type_name("N")
       ->check(InRange(1, 256, "texels per axis"));
+  app.add_option("--ltc-reference", o.ltcReference,
+                 "ltc_code's table as three.js ships it (RectAreaLightTexturesLib.js), measured "
+                 "beside ltc_ggx")
+      ->type_name("FILE");
   AddModelOptions(app, o.ndf, o.smith);
   AddSeedOption(app, o.seed, "Seed of the point sets");
   AddThreadsOption(app, o.threads);
@@ -49,6 +54,7 @@ int RunReport(const ReportOptions &o) {
   r.budgetSeconds = o.budget;
   r.seed = o.seed;
   r.threads = o.threads;
+  r.ltcReference = o.ltcReference;
   // SIGINT and SIGTERM end the report as they end a bake: 130 / 143, one
   // line, nothing written and the directory removed if this run made it.
   const InterruptGuard interrupt;
@@ -58,11 +64,11 @@ int RunReport(const ReportOptions &o) {
   ProgressPrinter shown("lutbake report", ProgressPrinter::StyleFor(stderr, o.quiet));
   r.progress = [&shown](const std::string &line) { shown.Status(line); };
   return RunLibraryCall("report", o.outDir, [&] {
-    const size_t runs = Report(r).rows.size();
+    const ReportOutcome outcome = Report(r);
     shown.Clear();
     if (!o.quiet)
-      std::cerr << "lutbake report: " << runs << " runs; wrote report.csv, report.md, "
-                << "report.svg in " << o.outDir << "\n";
+      std::cerr << "lutbake report: " << outcome.rows.size() << " runs; wrote "
+                << JoinNames(outcome.files) << "\n";
   });
 }
 

@@ -17,6 +17,7 @@ struct ReportOptions {
   uint64_t seed = 0;
   int threads = 0;
   bool quiet = false;
+  std::string ltcReference;
 };
 
 void SetupReportCommand(CLI::App &app, ReportOptions &options);

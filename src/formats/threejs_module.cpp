@@ -167,10 +167,16 @@ std::vector<float> ArrayNamed(const std::string &path, const std::string &text,
     while (p < last && (*p == ' ' || *p == '\n' || *p == '\r' || *p == '\t' || *p == ',')) ++p;
     if (p >= last) break;
     if (out.size() == expected) throw IoError(path + ": " + name + " holds too many values");
+    // three.js's own module writes some negatives as "- 4.5e-07".
+    bool negative = false;
+    if (*p == '-' && p + 1 < last && p[1] == ' ') {
+      negative = true;
+      for (++p; p < last && *p == ' ';) ++p;
+    }
     char *after = nullptr;
     const float v = std::strtof(p, &after);
     if (after == p) throw IoError(path + ": " + name + " holds something not a number");
-    out.push_back(v);
+    out.push_back(negative ? -v : v);
     p = after;
   }
   if (out.size() != expected)
@@ -180,6 +186,11 @@ std::vector<float> ArrayNamed(const std::string &path, const std::string &text,
 }
 
 }  // namespace
+
+std::vector<float> ReadThreejsLtcArray(const std::string &path, const std::string &name,
+                                       size_t count) {
+  return ArrayNamed(path, source_text::ReadText(path, size_t{1} << 28), name, count);
+}
 
 Table ReadThreejsLtcModule(const std::string &path) {
   const std::string text = source_text::ReadText(path, size_t{1} << 28);

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "lutbake/core/cancellation.h"
+#include "lutbake/validation/ltc_report.h"
 #include "lutbake/validation/report.h"
 
 namespace lutbake {
@@ -37,6 +38,10 @@ struct ReportRequest {
   double budgetSeconds = 60;       // in total, split evenly over table x estimator
   uint64_t seed = 0;
   int threads = 0;  // 0: all cores
+  // With "ltc_ggx" among the tables: ltc_code's table (three.js's
+  // RectAreaLightTexturesLib.js) to measure beside it (ltc_report.h); empty:
+  // lutbake's table alone.
+  std::string ltcReference;
   // Polled between texels and runs.
   const CancellationToken *cancellation = nullptr;
   // A line saying what is being measured, for a terminal; may be empty.
@@ -45,10 +50,11 @@ struct ReportRequest {
 
 struct ReportOutcome {
   std::vector<ReportRow> rows;
-  std::vector<std::string> files;  // report.csv, report.md, report.svg
+  std::vector<std::string> files;  // report.csv, report.md, report.svg (, ltc_error.csv, .svg)
 };
 
-// The tables a report can measure: those with sampled estimators.
+// The tables a report can measure: those with sampled estimators, and
+// ltc_ggx (its lobe error map, not an estimator comparison).
 std::vector<std::string> ReportTableNames();
 
 ReportOutcome Report(const ReportRequest &request);

@@ -44,6 +44,10 @@ Table ReadSourceTable(const std::string &path);
 // eight-channel table, channels 0 to 3 from LTC_MAT_1 and 4 to 7 from
 // LTC_MAT_2.
 Table ReadThreejsLtcModule(const std::string &path);
+// One array `const NAME = [ ... ];` of such a module, or of three.js's own
+// (ltc_code's table, no metadata): exactly `count` numbers, or IoError.
+std::vector<float> ReadThreejsLtcArray(const std::string &path, const std::string &name,
+                                       size_t count);
 
 // The storage of a generated header: its sizes, kValues as written (float,
 // or half bit patterns decoded), and
