@@ -263,7 +263,8 @@ std::string PresetListText(bool estimate) {
     std::snprintf(name, sizeof name, "%-22s ", preset->name.c_str());
     text += name + preset->summary + "\n";
     if (estimate)
-      text += std::string(23, ' ') + "bake: " + DescribeEstimate(EstimatePresetBake(*preset)) + "\n";
+      text +=
+          std::string(23, ' ') + "bake: " + DescribeEstimate(EstimatePresetBake(*preset)) + "\n";
   }
   return text;
 }

@@ -75,8 +75,8 @@ std::vector<std::string> ReportTableNames() {
 
 ReportOutcome Report(const ReportRequest &r) {
   const ReportSettings settings = SettingsOf(r);
-  const bool ltc = r.tables && std::find(r.tables->begin(), r.tables->end(), kLtcReportTable) !=
-                                   r.tables->end();
+  const bool ltc =
+      r.tables && std::find(r.tables->begin(), r.tables->end(), kLtcReportTable) != r.tables->end();
   if (!r.ltcReference.empty() && !ltc)
     throw UsageError("--ltc-reference " + r.ltcReference +
                      " measures ltc_code's table beside ltc_ggx; add ltc_ggx to --tables");

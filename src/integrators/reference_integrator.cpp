@@ -40,8 +40,8 @@ struct F82Weight {
 };
 
 // Integrand of the inner integral at inner variable v (for GGX v =
-// tan(psi / 2) with tan(theta) = alpha tan(psi); for Beckmann t), including the Jacobian d(xi)/dv, times each of the weights:
-// {A part, B part} (SplitSumWeights) or {C part} (F82Weight).
+// tan(psi / 2) with tan(theta) = alpha tan(psi); for Beckmann t), including the Jacobian d(xi)/dv,
+// times each of the weights: {A part, B part} (SplitSumWeights) or {C part} (F82Weight).
 template <typename Weights, int N = Weights::kChannels>
 std::array<double, N> InnerIntegrand(const Ndf &ndf, SmithForm smith, const InnerSetup &s,
                                      double v) {

@@ -33,8 +33,8 @@ BakeEstimate EstimateWork(const std::vector<EstimatedWork> &work, double seconds
       for (int a = 0; a < 3; ++a) {
         const size_t m = std::gcd(kMultiplier[a], wanted) == 1 ? kMultiplier[a] : 1;
         const size_t stratum = (m * k + kShift[a]) % wanted;
-        index[a] = static_cast<int>((2 * stratum + 1) * static_cast<size_t>(w.counts[a]) /
-                                    (2 * wanted));
+        index[a] =
+            static_cast<int>((2 * stratum + 1) * static_cast<size_t>(w.counts[a]) / (2 * wanted));
       }
       const Clock::time_point start = Clock::now();
       try {
@@ -46,7 +46,8 @@ BakeEstimate EstimateWork(const std::vector<EstimatedWork> &work, double seconds
       ++timed;
     }
     estimate.timedTexels += timed;
-    estimate.cpuSeconds += spent / static_cast<double>(timed * std::max<size_t>(1, w.texelsPerCall)) *
+    estimate.cpuSeconds += spent /
+                           static_cast<double>(timed * std::max<size_t>(1, w.texelsPerCall)) *
                            static_cast<double>(texels);
   }
   estimate.seconds = estimate.cpuSeconds / estimate.threads;

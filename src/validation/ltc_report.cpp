@@ -122,8 +122,8 @@ std::string LtcErrorSvg(const LtcErrorMap &map) {
   const int width = margin + panels * side + (panels - 1) * gap + 90;
   const int height = side + margin + 60;
   std::ostringstream out;
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\""
-      << height << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+      << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   for (int p = 0; p < panels; ++p) {
     const std::vector<double> &errors = p == 0 ? map.ours : map.theirs;
@@ -135,15 +135,13 @@ std::string LtcErrorSvg(const LtcErrorMap &map) {
     out << "<text x=\"" << left << "\" y=\"20\">" << title << "</text>\n";
     for (size_t k = 0; k < errors.size(); ++k) {
       const int i = static_cast<int>(k % map.grid), j = static_cast<int>(k / map.grid);
-      const double t =
-          (std::log10(std::max(errors[k], 1e-12)) - kLogMin) / (kLogMax - kLogMin);
+      const double t = (std::log10(std::max(errors[k], 1e-12)) - kLogMin) / (kLogMax - kLogMin);
       // mu to the right, roughness upward.
       out << "<rect x=\"" << left + i * cell << "\" y=\"" << top + (map.grid - 1 - j) * cell
           << "\" width=\"" << cell << "\" height=\"" << cell << "\" fill=\"" << Colour(t)
           << "\"/>\n";
     }
-    out << "<text x=\"" << left + side / 2 - 10 << "\" y=\"" << top + side + 18
-        << "\">mu</text>\n";
+    out << "<text x=\"" << left + side / 2 - 10 << "\" y=\"" << top + side + 18 << "\">mu</text>\n";
     out << "<text x=\"" << left << "\" y=\"" << top + side + 18 << "\">0</text>\n";
     out << "<text x=\"" << left + side - 8 << "\" y=\"" << top + side + 18 << "\">1</text>\n";
     out << "<text x=\"" << left - 14 << "\" y=\"" << top + side << "\">0</text>\n";
@@ -158,8 +156,8 @@ std::string LtcErrorSvg(const LtcErrorMap &map) {
   out << "<text x=\"" << barLeft + 20 << "\" y=\"" << top + 10 << "\">1</text>\n";
   out << "<text x=\"" << barLeft + 20 << "\" y=\"" << top + side << "\">1e-3</text>\n";
   out << "<text x=\"" << margin << "\" y=\"" << height - 12
-      << "\">lobe error int |f cos - m D| / E over the upper hemisphere, at " << map.grid
-      << " x " << map.grid << " points (mu, r) between the texels</text>\n";
+      << "\">lobe error int |f cos - m D| / E over the upper hemisphere, at " << map.grid << " x "
+      << map.grid << " points (mu, r) between the texels</text>\n";
   out << "</svg>\n";
   return out.str();
 }

@@ -5,7 +5,7 @@
 // of the unexpanded derivation (its stated rounding bound, and the bound of
 // the stored float32), check's reference, the Unity HDRP preset channel that
 // reads it, and eval, bake (every format), check and the header's helpers
-// through the command line.
+// through the library calls the command line makes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,9 +13,14 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
+#include "lutbake/api/bake.h"
+#include "lutbake/api/check.h"
+#include "lutbake/api/eval.h"
+#include "lutbake/core/error.h"
 #include "lutbake/integrators/gauss_legendre.h"
 #include "lutbake/presets/preset.h"
 #include "lutbake/tables/storage.h"
@@ -27,7 +32,6 @@ namespace lutbake {
 namespace {
 
 namespace fs = std::filesystem;
-using test::Lutbake;
 
 double BurleyE(double mu, double r) { return TableNamed("burley_E").Evaluate({}, mu, r).value[0]; }
 
@@ -208,31 +212,40 @@ TEST(BurleyTable, HdrpPresetChannelReadsTheTable) {
 }
 
 TEST(BurleyTable, Eval) {
-  test::CommandResult eval =
-      Lutbake("eval --table burley_E --mu 0.25,1 --roughness 0.5 --json", true);
-  ASSERT_EQ(eval.status, 0) << eval.output;
-  // One JSON object a point; E(1, 1/2) = 41/42 + 5/168 = 169/168.
-  std::istringstream lines(eval.output);
-  std::string line;
-  int points = 0;
-  for (const double mu : {0.25, 1.0}) {
-    ASSERT_TRUE(std::getline(lines, line)) << eval.output;
-    const nlohmann::json point = nlohmann::json::parse(line);
+  EvalRequest request;
+  request.table = "burley_E";
+  request.coordinates = {{"mu", {0.25, 1.0}}, {"roughness", {0.5}}};
+  const EvalResult eval = Evaluate(request);
+  // One point each; E(1, 1/2) = 41/42 + 5/168 = 169/168.
+  ASSERT_EQ(eval.points.size(), 2u);
+  for (size_t k = 0; k < 2; ++k) {
+    const nlohmann::json point = nlohmann::json::parse(eval.JsonLine(k));
+    const double mu = k == 0 ? 0.25 : 1.0;
     EXPECT_EQ(point["mu"].get<double>(), mu);
     EXPECT_EQ(point["roughness"].get<double>(), 0.5);
     EXPECT_EQ(point["estimator"], "exact");
     EXPECT_EQ(point["error"].get<double>(), 1e-14);
     EXPECT_EQ(point["value"].get<double>(), BurleyE(mu, 0.5));
-    ++points;
   }
-  EXPECT_EQ(points, 2);
   EXPECT_NEAR(BurleyE(1.0, 0.5), 169.0 / 168.0, 1e-14);
-  eval = Lutbake("eval --table burley_E --mu 0.5 --roughness 0.5");
-  EXPECT_EQ(eval.status, 0) << eval.output;
-  // Out of range, and an option the table does not take.
-  EXPECT_EQ(Lutbake("eval --table burley_E --mu 0.5 --roughness 1.5").status, 2);
-  EXPECT_EQ(Lutbake("eval --table burley_E --mu 0.5 --sigma 0.5").status, 2);
-  EXPECT_EQ(Lutbake("eval --table burley_E --mu 0.5").status, 2);
+  // Out of range, an option the table does not take, a coordinate missing:
+  // usage errors (exit 2 on the command line).
+  for (const auto &coordinates : std::vector<std::map<std::string, std::vector<double>>>{
+           {{"mu", {0.5}}, {"roughness", {1.5}}},
+           {{"mu", {0.5}}, {"sigma", {0.5}}},
+           {{"mu", {0.5}}}}) {
+    request.coordinates = coordinates;
+    EXPECT_THROW(Evaluate(request), UsageError);
+  }
+}
+
+BakeRequest BurleyBake(const fs::path &dir, const std::vector<std::string> &formats) {
+  BakeRequest request;
+  request.outputDirectory = dir.string();
+  request.tables = std::vector<std::string>{"burley_E"};
+  request.size = 8;
+  request.formats = formats;
+  return request;
 }
 
 // Every format that holds values above 1 writes it, and check reads the set
@@ -240,36 +253,42 @@ TEST(BurleyTable, Eval) {
 // [0, 1] only and refuses it (E reaches 785/504), as it refuses sheen_E.
 TEST(BurleyTable, BakeEveryFormatAndCheck) {
   const fs::path dir = test::Scratch("burley_bake");
-  test::CommandResult bake =
-      Lutbake("bake --out " + dir.string() +
-              " --tables burley_E --size 8 --format "
-              "exr,bin,header,ktx2,dds,inc,js,ts,glsl-array,hlsl-array,wgsl-array,msl-array "
-              "--shader glsl,hlsl,wgsl,msl --error-map");
-  ASSERT_EQ(bake.status, 0) << bake.output;
+  BakeRequest request = BurleyBake(dir, {"exr", "bin", "header", "ktx2", "dds", "inc", "js", "ts",
+                                         "glsl-array", "hlsl-array", "wgsl-array", "msl-array"});
+  request.shaders = {"glsl", "hlsl", "wgsl", "msl"};
+  request.errorMaps = true;
+  Bake(request);
   for (const char *file : {"burley_E.exr", "burley_E.bin", "burley_E.h", "burley_E.ktx2",
                            "burley_E.dds", "burley_E.inc", "burley_E.js", "burley_E.ts"})
     EXPECT_TRUE(fs::exists(dir / file)) << file;
-  const test::CommandResult check = Lutbake("check " + dir.string() + " --json", true);
-  EXPECT_EQ(check.status, 0) << check.output;
-  std::map<std::string, std::string> status = test::CheckStatuses(check.output);
+  CheckRequest checkRequest;
+  checkRequest.dir = dir.string();
+  const CheckOutcome check = Check(checkRequest);
+  EXPECT_TRUE(check.passed) << check.text << check.failureText;
+  std::map<std::string, std::string> status = test::CheckStatuses(check.json);
   for (const char *claim : {"burley_E range", "burley_E texels", "burley_E points",
                             "burley_E closed form", "burley_E finite"})
-    EXPECT_EQ(status[claim], "pass") << claim << "\n" << check.output;
+    EXPECT_EQ(status[claim], "pass") << claim << "\n" << check.text;
   fs::remove_all(dir);
 
   const fs::path half = test::Scratch("burley_half");
-  bake = Lutbake("bake --out " + half.string() +
-                 " --tables burley_E --size 8 --format "
-                 "ktx2-half,dds-half,inc-half,js-half,ts-half,header,bin "
-                 "--header-type half --bin-type double");
-  EXPECT_EQ(bake.status, 0) << bake.output;
-  EXPECT_EQ(Lutbake("check " + half.string()).status, 0);
+  request = BurleyBake(
+      half, {"ktx2-half", "dds-half", "inc-half", "js-half", "ts-half", "header", "bin"});
+  request.headerType = "half";
+  request.binType = "double";
+  Bake(request);
+  checkRequest.dir = half.string();
+  EXPECT_TRUE(Check(checkRequest).passed);
   fs::remove_all(half);
 
   const fs::path png = test::Scratch("burley_png");
-  bake = Lutbake("bake --out " + png.string() + " --tables burley_E --size 8 --format png16");
-  EXPECT_NE(bake.status, 0);
-  EXPECT_NE(bake.output.find("stores values in [0, 1] only"), std::string::npos) << bake.output;
+  try {
+    Bake(BurleyBake(png, {"png16"}));
+    ADD_FAILURE() << "png16 accepted values above 1";
+  } catch (const Error &e) {
+    EXPECT_NE(std::string(e.what()).find("stores values in [0, 1] only"), std::string::npos)
+        << e.what();
+  }
   fs::remove_all(png);
 }
 
@@ -278,9 +297,7 @@ TEST(BurleyTable, BakeEveryFormatAndCheck) {
 // texel.
 TEST(BurleyTable, HeaderHelpers) {
   const fs::path dir = test::Scratch("burley_header");
-  ASSERT_EQ(
-      Lutbake("bake --out " + dir.string() + " --tables burley_E --size 8 --format header").status,
-      0);
+  Bake(BurleyBake(dir, {"header"}));
   const double mu = 2.5 / 8, r = 6.5 / 8, e = static_cast<float>(BurleyE(mu, r));
   std::ofstream(dir / "main.cpp")
       << "#include <cmath>\n#include \"burley_E.h\"\n"
@@ -299,14 +316,17 @@ TEST(BurleyTable, HeaderHelpers) {
 // table) and holds the file to it.
 TEST(BurleyTable, CheckReadsTheHdrpPresetBack) {
   const fs::path dir = test::Scratch("burley_hdrp");
-  const test::CommandResult bake = Lutbake("bake --out " + dir.string() +
-                                           " --preset unity-hdrp --files "
-                                           "PreIntegratedFGD_GGXDisneyDiffuse.exr");
-  ASSERT_EQ(bake.status, 0) << bake.output;
-  const test::CommandResult check = Lutbake("check " + dir.string());
-  EXPECT_EQ(check.status, 0) << check.output;
-  EXPECT_NE(check.output.find("pass PreIntegratedFGD_GGXDisneyDiffuse.exr"), std::string::npos)
-      << check.output;
+  BakeRequest request;
+  request.outputDirectory = dir.string();
+  request.preset = "unity-hdrp";
+  request.presetFiles = std::vector<std::string>{"PreIntegratedFGD_GGXDisneyDiffuse.exr"};
+  Bake(request);
+  CheckRequest checkRequest;
+  checkRequest.dir = dir.string();
+  const CheckOutcome check = Check(checkRequest);
+  EXPECT_TRUE(check.passed) << check.text;
+  EXPECT_NE(check.text.find("pass PreIntegratedFGD_GGXDisneyDiffuse.exr"), std::string::npos)
+      << check.text;
   fs::remove_all(dir);
 }
 

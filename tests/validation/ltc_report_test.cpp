@@ -71,8 +71,7 @@ TEST(LtcReport, TheFittedTableBeatsThePlainCosineAtEveryRoughPoint) {
   const LtcLobe lobe = MicrofacetLtcLobe(Ndf{NdfKind::kGgx, r * r}, SmithForm::kCorrelated);
   double magnitude = 0, fresnel = 0;
   lobe.moments(mu, &magnitude, &fresnel);
-  EXPECT_NEAR(map.theirs[3 * 8 + 2], LtcLobeError(lobe, mu, magnitude, 1.0, LtcMatrix{}, 1),
-              1e-12);
+  EXPECT_NEAR(map.theirs[3 * 8 + 2], LtcLobeError(lobe, mu, magnitude, 1.0, LtcMatrix{}, 1), 1e-12);
   fs::remove_all(module.parent_path());
 }
 

@@ -1,10 +1,9 @@
 // How long a bake will take, from a timed sample of its texels: a few texels
 // of each table, spread over its axes as a Latin hypercube (an evenly
 // spread flat index would put them all in one column), are
-// evaluated one at a time on the calling thread, and their mean cost times the table's texel count, summed
-// over the tables and divided by the threads, is the estimate. The texels
-// timed are fixed; the time is this machine's now (an estimate, not a
-// result: it is never written into a table).
+// evaluated one at a time on the calling thread, and their mean cost times the table's texel count,
+// summed over the tables and divided by the threads, is the estimate. The texels timed are fixed;
+// the time is this machine's now (an estimate, not a result: it is never written into a table).
 //
 // The default split-sum and Kulla-Conty bakes share work between texels
 // (one set of points, SIMD over texels), so a texel alone costs more than
@@ -41,8 +40,7 @@ struct BakeEstimate {
 // more once a table's timed texels have taken secondsPerTable (one is
 // always timed).
 inline constexpr int kEstimateTexelsPerTable = 8;
-BakeEstimate EstimateBake(const std::vector<EstimatedTable> &tables,
-                          double secondsPerTable = 0.25);
+BakeEstimate EstimateBake(const std::vector<EstimatedTable> &tables, double secondsPerTable = 0.25);
 
 // The same for any texel loop (a preset's textures): counts[0] x counts[1]
 // x counts[2] texels, of which evaluateTexel(i, j, k) computes

@@ -22,7 +22,7 @@ struct LtcErrorMap {
   int grid = 0;  // points per axis: mu_i = (i + 0.5) / grid, r_j = (j + 0.5) / grid
   NdfKind ndf = NdfKind::kGgx;
   SmithForm smith = SmithForm::kCorrelated;
-  std::string reference;            // the reference file, or empty
+  std::string reference;             // the reference file, or empty
   std::vector<double> ours, theirs;  // grid x grid, mu fastest; theirs empty without one
   double meanOurs = 0, maxOurs = 0, meanTheirs = 0, maxTheirs = 0;
 };
