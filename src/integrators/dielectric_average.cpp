@@ -46,7 +46,12 @@ constexpr double kPanelShare = 0.7;
 // what is left (ratio 4).
 constexpr double kKeep = 0.25;
 constexpr double kBeckmannCut = 7.0;
-constexpr int kMaxOuterPanels = 400;
+// Where the panels keep splitting (the differences stop shrinking: a few
+// (r, eta) pairs, e.g. eta < 0.15 at r ~ 0.5, where the azimuth panels'
+// layout jumps between neighbouring facets) or the values run past this
+// budget, the rule over the albedos answers instead (the smaller bound).
+constexpr int kMaxOuterPanels = 24;
+constexpr uint64_t kEvaluationBudget = 40000000;
 constexpr double kMaxPanel = 0.5;          // in c, x and w
 constexpr double kBeckmannMaxPanel = 1.0;  // in t
 
@@ -92,18 +97,57 @@ double LayerBeside(const Setup &s, double other) {
   return std::max(std::min(s.layer, other), graded::kSmallestScale);
 }
 
+// The two cosines along an azimuth range, affine in cos(psi): mu_o = a +
+// ka cos(psi), mu_i = (b + kb cos(psi)) / divisor.
+struct CosineLine {
+  double a, ka, b, kb, divisor;
+};
+
+// G2 at n pairs of cosines (0 unless both are positive), gathered first
+// (1.2x faster than a call per node, measured on 40 texels).
+void G2Batch(const Setup &s, const double *muO, const double *muI, size_t n, double *out) {
+  if (s.ndf.kind != NdfKind::kGgx) {
+    for (size_t k = 0; k < n; ++k) out[k] = G2(s, muO[k], muI[k]);
+    return;
+  }
+  // One loop per Smith form.
+  const auto loop = [&](auto form) {
+    const double alpha2 = s.alpha2;
+    for (size_t k = 0; k < n; ++k) {
+      const double o = muO[k], i = muI[k];
+      const double mo0 = o < 1.0 ? o : 1.0, mi0 = i < 1.0 ? i : 1.0;
+      const bool valid = (mo0 > 0.0) & (mi0 > 0.0);
+      // Invalid pairs are computed at 1 (finite) and dropped below.
+      const double mo = valid ? mo0 : 1.0, mi = valid ? mi0 : 1.0;
+      const double co = (1.0 - mo) * (1.0 + mo), ci = (1.0 - mi) * (1.0 + mi);
+      const double so = alpha2 * (co > 0.0 ? co : 0.0), si = alpha2 * (ci > 0.0 ? ci : 0.0);
+      const double Lo = so / (2.0 * (std::sqrt(mo * mo + so) + mo));
+      const double Li = si / (2.0 * (std::sqrt(mi * mi + si) + mi));
+      const double g = form(mo, mi, Lo, Li);
+      out[k] = valid ? g : 0.0;
+    }
+  };
+  if (s.smith == SmithForm::kCorrelated)
+    loop([](double mo, double mi, double Lo, double Li) {
+      return mo * mi / (mo * mi + mi * Lo + mo * Li);
+    });
+  else
+    loop([](double mo, double mi, double Lo, double Li) {
+      return (mo / (mo + Lo)) * (mi / (mi + Li));
+    });
+}
+
 // The azimuth integrals run in v = tan(psi / 2) (or of pi - psi): cos(psi)
 // = (1 - v^2) / (1 + v^2), d(psi) = 2 dv / (1 + v^2), no trigonometry at the
 // nodes. v = 0 is psi = 0, v = 1 psi = pi/2; a horizon at cos(psi_k) = k / S
 // (|k| < S) sits at v_k = sqrt((S - k) / (S + k)); where none is crossed, the
 // smallest cosine delta >= 0 is at v = 0 (of the far side). Panels [from,
 // to], graded toward `from` (towardFrom) or `to` down to `scalePsi` (in psi;
-// dv/d(psi) = (1 + v^2) / 2 there), and the sum of g(cos(psi)) d(psi) over
-// them.
-template <class Integrand>
+// dv/d(psi) = (1 + v^2) / 2 there), and the sum of G2 d(psi) over them.
 double HalfAngleArc(double from, double to, double scalePsi, bool towardFrom,
-                    const GaussLegendreRule &rule, const Setup &s, const Integrand &g) {
+                    const GaussLegendreRule &rule, const Setup &s, const CosineLine &line) {
   thread_local std::vector<Panel> panels;
+  thread_local std::vector<double> muO, muI, weight, g2;
   panels.clear();
   if (!(from < to)) return 0.0;
   const double end = towardFrom ? from : to;
@@ -112,16 +156,32 @@ double HalfAngleArc(double from, double to, double scalePsi, bool towardFrom,
     GradeToward(from, to, scale, towardFrom, &panels, kKeep);
   else
     panels.push_back({from, to});
-  *s.evaluations += panels.size() * static_cast<uint64_t>(rule.n);
+  const size_t n = static_cast<size_t>(rule.n), total = panels.size() * n;
+  *s.evaluations += total;
+  if (muO.size() < total) {
+    muO.resize(total);
+    muI.resize(total);
+    weight.resize(total);
+    g2.resize(total);
+  }
+  size_t k = 0;
+  for (const Panel &p : panels) {
+    const double len = p.b - p.a;
+    for (size_t j = 0; j < n; ++j, ++k) {
+      const double v = p.a + len * rule.x[j], q = 1.0 / (1.0 + v * v);
+      const double cosPsi = (1.0 - v * v) * q;
+      muO[k] = line.a + line.ka * cosPsi;
+      muI[k] = (line.b + line.kb * cosPsi) / line.divisor;
+      weight[k] = rule.w[j] * q;
+    }
+  }
+  G2Batch(s, muO.data(), muI.data(), total, g2.data());
   double sum = 0.0;
+  k = 0;
   for (const Panel &p : panels) {
     double part = 0.0;
-    const double len = p.b - p.a;
-    for (int j = 0; j < rule.n; ++j) {
-      const double v = p.a + len * rule.x[j], q = 1.0 / (1.0 + v * v);
-      part += rule.w[j] * q * g((1.0 - v * v) * q);
-    }
-    sum += part * len;
+    for (size_t j = 0; j < n; ++j, ++k) part += weight[k] * g2[k];
+    sum += part * (p.b - p.a);
   }
   return 2.0 * sum;
 }
@@ -147,10 +207,7 @@ double EndScale(double delta, double S, double layer) {
 double ReflectionArc(const Setup &s, double a, double S, const GaussLegendreRule &rule) {
   if (!(a > 0.0)) return 0.0;
   if (!(S > 0.0)) return kPi * G2(s, a, a);
-  const auto g = [&](double cosPsi) {
-    const double u = S * cosPsi;
-    return G2(s, a + u, a - u);
-  };
+  const CosineLine g{a, S, a, -S, 1.0};
   if (S > a) {
     const double sinPsi = std::sqrt((S - a) * (S + a)) / S;
     return 2.0 * HalfAngleArc(std::sqrt((S - a) / (S + a)), 1.0,
@@ -170,14 +227,7 @@ double TransmissionArc(const Setup &s, double a, double b, double S,
   // The binding cosine's layer in u: mu_o's beside mu_t = (b - a) / eta, or
   // mu_t's (eta times narrower in u) beside mu_o = a - b, at that horizon.
   const double layer = b < a ? s.eta * LayerBeside(s, a - b) : LayerBeside(s, (b - a) / s.eta);
-  const auto near = [&](double cosPsi) {
-    const double u = S * cosPsi;
-    return G2(s, a + u, (b + u) / s.eta);
-  };
-  const auto far = [&](double cosPsi) {
-    const double u = -S * cosPsi;
-    return G2(s, a + u, (b + u) / s.eta);
-  };
+  const CosineLine near{a, S, b, S, s.eta}, far{a, -S, b, -S, s.eta};
   if (S > m) {
     const double sinPsi = std::sqrt((S - m) * (S + m)) / S;
     const double scale = HorizonScale(sinPsi, S, layer);
@@ -390,7 +440,8 @@ DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, Diel
   }
   // The panel with the largest difference a level further (at the last
   // level split in two) until twice the differences are within the share.
-  while (kDifferenceFactor * differences > kPanelShare * tolerance) {
+  while (kDifferenceFactor * differences > kPanelShare * tolerance &&
+         evaluations <= kEvaluationBudget) {
     size_t worst = 0;
     for (size_t k = 1; k < panels.size(); ++k)
       if (panels[k].difference > panels[worst].difference) worst = k;
@@ -405,7 +456,7 @@ DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, Diel
       continue;
     }
     const double mid = 0.5 * (w.p.a + w.p.b);
-    if (panels.size() >= kMaxOuterPanels || !(mid > w.p.a && mid < w.p.b)) break;
+    if (static_cast<int>(panels.size()) >= kMaxOuterPanels || !(mid > w.p.a && mid < w.p.b)) break;
     // The half away from a mapped end is linear.
     OuterPanel left{{w.p.a, mid, w.p.square > 0 ? 1 : 0}, w.variable};
     OuterPanel right{{mid, w.p.b, w.p.square < 0 ? -1 : 0}, w.variable};
@@ -430,6 +481,12 @@ DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, Diel
   out.bound = kDifferenceFactor * differences + kBoundFloor + kToleranceShare * tolerance + cut;
   out.converged = out.bound <= tolerance * std::max(1.0, std::abs(value));
   out.evaluations = evaluations;
+  if (!out.converged) {
+    const DielectricIntegral before =
+        IntegrateDielectricAverageOverAlbedo(ndf, smith, lobes, alpha, eta, tolerance);
+    if (before.bound < out.bound) out = before;
+    out.evaluations = evaluations + before.evaluations;
+  }
   return out;
 }
 
