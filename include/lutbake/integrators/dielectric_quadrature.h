@@ -201,7 +201,11 @@ DielectricIntegral IntegrateDielectricAverageOverAlbedo(NdfKind ndf, SmithForm s
 // = pi/2, and a split of the psi range at pi/2 inside a horizon's layer
 // missed 2.5e-8: both are what the layout above avoids. Cost at tolerance
 // 1e-8 (bake times: docs/speed.md): 0.2 to 2 million G2 values a texel.
-// alpha = 0: glass 1 exactly, reflection F_avg by the rule above.
+// Where the outer panels keep splitting (more than 24: the differences stop
+// shrinking, e.g. eta < 0.15 at r 0.33..1, where the inner panels' layout
+// jumps between neighbouring facets by about the inner rule's error) or the
+// G2 values pass 4e7, the rule above answers instead when its bound is the
+// smaller. alpha = 0: glass 1 exactly, reflection F_avg by the rule above.
 DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, DielectricLobes lobes,
                                               double alpha, double eta, double tolerance);
 
