@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "integrators/dielectric_kernel.h"
+#include "integrators/graded_panels.h"
 #include "lutbake/core/math.h"
 #include "lutbake/integrators/gauss_kronrod.h"
 #include "lutbake/integrators/gauss_legendre.h"
@@ -18,6 +19,12 @@
 namespace lutbake {
 
 namespace {
+
+using graded::BuildPanels;
+using graded::GradeToward;
+using graded::MapNode;
+using graded::Panel;
+using graded::Point;
 
 constexpr int kLevels = 6;
 constexpr int kNodes[kLevels] = {5, 7, 10, 14, 19, 25};
@@ -40,7 +47,7 @@ constexpr double kBeckmannMaxPanel = 1.0;  // in t (exp(-t^2) is entire)
 constexpr double kBeckmannCut = 7.0;       // t = T / alpha
 constexpr int kScanAzimuths = 1024;        // to find the outer kinks
 constexpr double kInfiniteT = 1e300;       // a kink beyond this is at T = infinity
-constexpr double kSmallestScale = 1e-14;   // grading stops here whatever the scale
+using graded::kSmallestScale;
 
 void CheckArguments(double alpha, double mu_o, double eta, double tolerance) {
   if (!(alpha >= 0.0 && alpha <= 1.0))
@@ -182,125 +189,6 @@ void InnerKinks(const Setup &s, double cosPhi, double sinPhi, Kinks *kinks, doub
   if (s.ndf.kind == NdfKind::kGgx && inside(s.ndf.alpha))
     kinks->push_back({s.ndf.alpha, kSplit, 0.0, 0.0});
   kinks->Sort();
-}
-
-struct Point {
-  double v, below, above;  // position and grading scales, in the variable
-  bool sqBelow = false, sqAbove = false;
-  double keep = 0.5;  // the grading toward it: each panel keeps this share of the rest
-};
-
-struct Panel {
-  double a, b;
-  // +1: v = a + (b - a) u^2; -1: v = b - (b - a) u^2; 0: linear;
-  // +2: v = root + (s_a + (s_b - s_a) u)^2, s_a = sqrt(a - root), s_b =
-  // sqrt(b - root), for a square-root branch point at root <= a just outside
-  // the panel (sqrt(v - root) is then linear in u); -2: v = root - (s_a +
-  // (s_b - s_a) u)^2, s = sqrt(root - v), for one at root >= b.
-  int square = 0;
-  double root = 0.0;
-};
-
-// Panels from a to b graded geometrically toward a (each keeps the share
-// `keep` of what is left: ratio 1 / keep) until the one next to a is at
-// most delta long.
-void GradeToward(double a, double b, double delta, bool towardA, std::vector<Panel> *out,
-                 double keep = 0.5) {
-  delta = std::max(delta, kSmallestScale * std::max(1.0, std::abs(a) + std::abs(b)));
-  if (towardA) {
-    double cur = b;
-    while (cur - a > delta) {
-      const double mid = a + keep * (cur - a);
-      out->push_back({mid, cur});
-      cur = mid;
-    }
-    out->push_back({a, cur});
-  } else {
-    double cur = a;
-    while (b - cur > delta) {
-      const double mid = b - keep * (b - cur);
-      out->push_back({cur, mid});
-      cur = mid;
-    }
-    out->push_back({cur, b});
-  }
-}
-
-// Panels between sorted points, graded toward those with a scale, then
-// split so that none is longer than maxLength nor, when nearSingular > 0,
-// longer than max(its start, nearSingular) (singularities at +-i nearSingular
-// about 0).
-void BuildPanels(const std::vector<Point> &points, double maxLength, double nearSingular,
-                 std::vector<Panel> *out) {
-  for (size_t k = 0; k + 1 < points.size(); ++k) {
-    const Point &p = points[k], &q = points[k + 1];
-    if (!(q.v > p.v)) continue;
-    thread_local std::vector<Panel> graded;
-    graded.clear();
-    const bool gp = p.above > 0.0 && p.above < q.v - p.v;
-    const bool gq = q.below > 0.0 && q.below < q.v - p.v;
-    if (gp && gq) {
-      const double mid = 0.5 * (p.v + q.v);
-      GradeToward(p.v, mid, p.above, true, &graded, p.keep);
-      GradeToward(mid, q.v, q.below, false, &graded, q.keep);
-    } else if (gp) {
-      GradeToward(p.v, q.v, p.above, true, &graded, p.keep);
-    } else if (gq) {
-      GradeToward(p.v, q.v, q.below, false, &graded, q.keep);
-    } else if (p.sqAbove && q.sqBelow) {
-      // Two square-root ends: one quadratic panel toward each.
-      graded.push_back({p.v, 0.5 * (p.v + q.v)});
-      graded.push_back({0.5 * (p.v + q.v), q.v});
-    } else {
-      graded.push_back({p.v, q.v});
-    }
-    const size_t start = out->size();
-    for (const Panel &g : graded) {
-      if (nearSingular <= 0.0) {
-        // Equal pieces: a short last piece would put the piece before it
-        // next to whatever singularity sits at g.b.
-        const int m = std::max(1, static_cast<int>(std::ceil((g.b - g.a) / maxLength - 1e-9)));
-        for (int k = 0; k < m; ++k)
-          out->push_back(
-              {g.a + (g.b - g.a) * k / m, k + 1 == m ? g.b : g.a + (g.b - g.a) * (k + 1) / m});
-        continue;
-      }
-      double cur = g.a;
-      for (;;) {
-        const double len = std::min(maxLength, std::max(cur, nearSingular));
-        // The last piece is between 1/2 and 3/2 of len, for the same reason.
-        if (g.b - cur <= 1.5 * len) break;
-        out->push_back({cur, cur + len});
-        cur += len;
-      }
-      out->push_back({cur, g.b});
-    }
-    std::sort(out->begin() + start, out->end(),
-              [](const Panel &x, const Panel &y) { return x.a < y.a; });
-    if (p.sqAbove) (*out)[start].square = 1;
-    if (q.sqBelow) out->back().square = -1;
-  }
-}
-
-// The node of a panel at u in [0, 1]; returns dv/du.
-double MapNode(const Panel &p, double u, double *v) {
-  const double len = p.b - p.a;
-  if (p.square == 2 || p.square == -2) {
-    const double sa = std::sqrt(std::abs(p.a - p.root)), sb = std::sqrt(std::abs(p.b - p.root));
-    const double t = sa + (sb - sa) * u;
-    *v = p.square == 2 ? p.root + t * t : p.root - t * t;
-    return 2.0 * t * std::abs(sb - sa);
-  }
-  if (p.square > 0) {
-    *v = p.a + len * u * u;
-    return 2.0 * len * u;
-  }
-  if (p.square < 0) {
-    *v = p.b - len * u * u;
-    return 2.0 * len * u;
-  }
-  *v = p.a + len * u;
-  return len;
 }
 
 // The square-root branch points of W = sqrt(c^2 - c_crit^2) along the ray,
@@ -912,8 +800,9 @@ struct AveragePanel {
 // sqrt(tolerance)) (the panel below carries at most that squared) and the
 // last one is mapped quadratically (at r -> 1, E is not analytic at mu = 0:
 // Gauss panels converged only algebraically there).
-DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, DielectricLobes lobes,
-                                              double alpha, double eta, double tolerance) {
+DielectricIntegral IntegrateDielectricAverageOverAlbedo(NdfKind ndf, SmithForm smith,
+                                                        DielectricLobes lobes, double alpha,
+                                                        double eta, double tolerance) {
   CheckArguments(alpha, 0.5, eta, tolerance);
   DielectricIntegral out;
   if (alpha == 0.0 && lobes == DielectricLobes::kReflectionAndTransmission) {

@@ -1,7 +1,8 @@
 // Table spec_Eavg: the cosine-weighted average of spec_E over the view,
 //   spec_Eavg(r, eta) = 2 integral_0^1 spec_E(mu, r, eta) mu dmu,
-// integrated from the exact spec_E (Fejer panels in theta = acos(mu), ending
-// at the kinks mu = c_crit = sqrt(1 - eta^2) and mu = eta for eta < 1).
+// integrated over the half vector first, then the view on circles about it
+// (IntegrateDielectricAverage: the critical cosine o.h = c_crit is a
+// coordinate line there, the horizons closed-form ends of the azimuths).
 // Axes: x = perceptual roughness r (32), y = eta (dielectric_table.h), 2D.
 // Between the two sides of an interface the transmitted parts obey
 // reciprocity (dielectric.h):

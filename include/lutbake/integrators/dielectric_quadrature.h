@@ -136,13 +136,13 @@ DielectricIntegral IntegrateDielectricAlbedo(NdfKind ndf, SmithForm smith, Diele
                                              double alpha, double mu_o, double eta,
                                              double tolerance);
 
-// E_avg = int_0^(pi/2) E(cos(theta)) sin(2 theta) dtheta, a rule in theta =
-// acos(mu) (E is even, so analytic, in theta at the normal, where in mu it is
-// not). The panels end on E's kinks, for eta < 1 theta_c = asin(eta) (mu =
-// c_crit) and, for alpha >= 0.04, theta_eta = acos(eta) (mu = eta; below, the
-// facets at the horizon that make it weigh alpha^2 / pi), graded toward them
-// (ratio 4, from max(alpha / 4, sqrt(10 tolerance))) and toward mu = 0 (from
-// max(alpha, 0.1 sqrt(tolerance))), the panels that touch them mapped
+// The average's rule before the one below, kept as its independent check
+// (tests, validation): E_avg = int_0^(pi/2) E(cos(theta)) sin(2 theta)
+// dtheta, a rule in theta = acos(mu) (E is even, so analytic, in theta at the normal, where in mu
+// it is not). The panels end on E's kinks, for eta < 1 theta_c = asin(eta) (mu = c_crit) and, for
+// alpha >= 0.04, theta_eta = acos(eta) (mu = eta; below, the facets at the horizon that make it
+// weigh alpha^2 / pi), graded toward them (ratio 4, from max(alpha / 4, sqrt(10 tolerance))) and
+// toward mu = 0 (from max(alpha, 0.1 sqrt(tolerance))), the panels that touch them mapped
 // quadratically (the .cpp says why). Each panel takes Fejer's second rule,
 // nested: 3, 7, 15, 31, 63, 127 nodes, every albedo kept for the finer
 // levels. Every panel at the first two levels, then the panel with the
@@ -160,6 +160,52 @@ DielectricIntegral IntegrateDielectricAlbedo(NdfKind ndf, SmithForm smith, Diele
 // out below alpha = 0.04). Facet weights at tolerance 1e-8 on that grid: glass 3.0e8
 // against 6.1e8 for the rule before, reflection 2.6e8 against 5.0e8 (bake
 // times: docs/speed.md).
+DielectricIntegral IntegrateDielectricAverageOverAlbedo(NdfKind ndf, SmithForm smith,
+                                                        DielectricLobes lobes, double alpha,
+                                                        double eta, double tolerance);
+
+// E_avg over the half vector first (integrators/dielectric_average.cpp):
+// with o at c = o.h and azimuth psi about the facet h (h_z = cos(theta),
+// h_s = sin(theta)), d(omega_o) = dc d(psi) and
+//   E_avg = (2/pi) int d(xi) / h_z int_0^1 c dc [F(c) A_r + (1 - F(c)) A_t],
+//   A_r = int_0^pi G2(mu_o, mu_r) d(psi),  A_t = int_0^pi G2(mu_o, |mu_t|) d(psi)
+// over the azimuths where those cosines are positive, mu_o = c h_z + u,
+// mu_r = c h_z - u, |mu_t| = (W h_z + u) / eta, u = sqrt(1 - c^2) h_s
+// cos(psi) (xi the NDF's CDF in theta, in GGX's x = T / alpha and w = alpha
+// / T or Beckmann's t = T / alpha, cut at t = 7). F depends on c alone: the
+// critical cosine is a coordinate line, and each horizon the closed-form end
+// of a psi range. The panels end on the breaks: in psi (as v = tan(psi / 2))
+// at the horizons, graded toward them (ratio 4) to where G2 is singular
+// (min(alpha / 2, the other cosine there)); in c at c_crit (the refracting
+// side mapped quadratically, graded to c_crit / 2), at c = h_s and, for
+// glass with eta < 1, c = sqrt(1 - eta^2 h_z^2), where a horizon enters the
+// psi range (the panel below mapped quadratically, both sides graded to G2's
+// layer, ratio 4, no further than the next break), and at c = 0 (graded to
+// half the distance of F's singularities for eta > 1: sqrt(eta^2 - 1) and
+// 1 / sqrt(eta^2 + 1)); in theta at tan(theta) = c_crit / eta (eta < 1,
+// where c = h_s crosses c_crit: mapped quadratically on both sides), GGX's
+// split T = alpha, and toward theta = pi/2 (w = 0, from alpha / 4). Level k
+// takes n(k) = 5, 7, 10, 14, 19, 25 Gauss nodes per panel in all three
+// variables; every outer panel at levels 0 and 1, then the one with the
+// largest level difference a level further (split in two past the last)
+// until 2 sum_p |V_p,k - V_p,k-1| <= 0.7 tolerance. Bound: 2 sum_p |V_p,k -
+// V_p,k-1| + 0.2 tolerance + 1e-10 (+ the Beckmann cut, e^-49 (1 + 8
+// alpha)); `converged` when that is <= tolerance max(1, value). An estimate,
+// validated against IntegrateDielectricAverageOverAlbedo (a rule over the
+// view of albedos over the half vector): the default glass_Eavg and
+// spec_Eavg tables (GGX correlated, 32 roughnesses x 23 etas from 1/3 to 3,
+// tolerance 1e-8) differ from that rule's by at most 0.85 of the two
+// stored bounds summed, and the tests' hard points (eta 1/128, 0.9999, 1 -+
+// 1e-6, 128; r 0.01 to 1; Beckmann and separable) within the summed bounds
+// too. Starting levels of 3 and 5 nodes agreed falsely by 1.5e-7 near theta
+// = pi/2, and a split of the psi range at pi/2 inside a horizon's layer
+// missed 2.5e-8: both are what the layout above avoids. Cost at tolerance
+// 1e-8 (bake times: docs/speed.md): 0.2 to 2 million G2 values a texel.
+// Where the outer panels keep splitting (more than 24: the differences stop
+// shrinking, e.g. eta < 0.15 at r 0.33..1, where the inner panels' layout
+// jumps between neighbouring facets by about the inner rule's error) or the
+// G2 values pass 4e7, the rule above answers instead when its bound is the
+// smaller. alpha = 0: glass 1 exactly, reflection F_avg by the rule above.
 DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, DielectricLobes lobes,
                                               double alpha, double eta, double tolerance);
 

@@ -1,0 +1,89 @@
+// The graded panels of graded_panels.h.
+#include "integrators/graded_panels.h"
+
+#include <algorithm>
+
+namespace lutbake::graded {
+
+// Panels from a to b graded geometrically toward a (each keeps the share
+// `keep` of what is left: ratio 1 / keep) until the one next to a is at
+// most delta long.
+void GradeToward(double a, double b, double delta, bool towardA, std::vector<Panel> *out,
+                 double keep) {
+  delta = std::max(delta, kSmallestScale * std::max(1.0, std::abs(a) + std::abs(b)));
+  if (towardA) {
+    double cur = b;
+    while (cur - a > delta) {
+      const double mid = a + keep * (cur - a);
+      out->push_back({mid, cur});
+      cur = mid;
+    }
+    out->push_back({a, cur});
+  } else {
+    double cur = a;
+    while (b - cur > delta) {
+      const double mid = b - keep * (b - cur);
+      out->push_back({cur, mid});
+      cur = mid;
+    }
+    out->push_back({cur, b});
+  }
+}
+
+// Panels between sorted points, graded toward those with a scale, then
+// split so that none is longer than maxLength nor, when nearSingular > 0,
+// longer than max(its start, nearSingular) (singularities at +-i nearSingular
+// about 0).
+void BuildPanels(const std::vector<Point> &points, double maxLength, double nearSingular,
+                 std::vector<Panel> *out) {
+  for (size_t k = 0; k + 1 < points.size(); ++k) {
+    const Point &p = points[k], &q = points[k + 1];
+    if (!(q.v > p.v)) continue;
+    thread_local std::vector<Panel> graded;
+    graded.clear();
+    const bool gp = p.above > 0.0 && p.above < q.v - p.v;
+    const bool gq = q.below > 0.0 && q.below < q.v - p.v;
+    if (gp && gq) {
+      const double mid = 0.5 * (p.v + q.v);
+      GradeToward(p.v, mid, p.above, true, &graded, p.keep);
+      GradeToward(mid, q.v, q.below, false, &graded, q.keep);
+    } else if (gp) {
+      GradeToward(p.v, q.v, p.above, true, &graded, p.keep);
+    } else if (gq) {
+      GradeToward(p.v, q.v, q.below, false, &graded, q.keep);
+    } else if (p.sqAbove && q.sqBelow) {
+      // Two square-root ends: one quadratic panel toward each.
+      graded.push_back({p.v, 0.5 * (p.v + q.v)});
+      graded.push_back({0.5 * (p.v + q.v), q.v});
+    } else {
+      graded.push_back({p.v, q.v});
+    }
+    const size_t start = out->size();
+    for (const Panel &g : graded) {
+      if (nearSingular <= 0.0) {
+        // Equal pieces: a short last piece would put the piece before it
+        // next to whatever singularity sits at g.b.
+        const int m = std::max(1, static_cast<int>(std::ceil((g.b - g.a) / maxLength - 1e-9)));
+        for (int k = 0; k < m; ++k)
+          out->push_back(
+              {g.a + (g.b - g.a) * k / m, k + 1 == m ? g.b : g.a + (g.b - g.a) * (k + 1) / m});
+        continue;
+      }
+      double cur = g.a;
+      for (;;) {
+        const double len = std::min(maxLength, std::max(cur, nearSingular));
+        // The last piece is between 1/2 and 3/2 of len, for the same reason.
+        if (g.b - cur <= 1.5 * len) break;
+        out->push_back({cur, cur + len});
+        cur += len;
+      }
+      out->push_back({cur, g.b});
+    }
+    std::sort(out->begin() + start, out->end(),
+              [](const Panel &x, const Panel &y) { return x.a < y.a; });
+    if (p.sqAbove) (*out)[start].square = 1;
+    if (q.sqBelow) out->back().square = -1;
+  }
+}
+
+}  // namespace lutbake::graded

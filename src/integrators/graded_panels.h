@@ -1,0 +1,71 @@
+// Panels for Gauss rules over one variable whose integrand has known
+// breaks: the panels end on every break, are graded geometrically toward
+// those that carry a scale (a nearby complex singularity, a boundary layer),
+// and the panel beside a square-root-type point is mapped quadratically, so
+// that the integrand is analytic in the rule's variable on every panel. The
+// rough-dielectric albedo (over the half vector's polar angle and azimuth)
+// and its average (over the half vector, o.h and the azimuth about h) lay
+// their panels with these. Private to the integrators layer.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+namespace lutbake::graded {
+
+// Grading stops at this (relative) scale whatever the scale asked for.
+inline constexpr double kSmallestScale = 1e-14;
+
+struct Point {
+  double v, below, above;  // position and grading scales, in the variable
+  bool sqBelow = false, sqAbove = false;
+  double keep = 0.5;  // the grading toward it: each panel keeps this share of the rest
+};
+
+struct Panel {
+  double a, b;
+  // +1: v = a + (b - a) u^2; -1: v = b - (b - a) u^2; 0: linear;
+  // +2: v = root + (s_a + (s_b - s_a) u)^2, s_a = sqrt(a - root), s_b =
+  // sqrt(b - root), for a square-root branch point at root <= a just outside
+  // the panel (sqrt(v - root) is then linear in u); -2: v = root - (s_a +
+  // (s_b - s_a) u)^2, s = sqrt(root - v), for one at root >= b.
+  int square = 0;
+  double root = 0.0;
+};
+
+// Panels from a to b graded geometrically toward a (towardA) or b: each
+// keeps the share `keep` of what is left (ratio 1 / keep), until the one
+// next to that end is at most delta long.
+void GradeToward(double a, double b, double delta, bool towardA, std::vector<Panel> *out,
+                 double keep = 0.5);
+
+// Panels between sorted points, graded toward those with a scale (above,
+// below), the panel beside a point with sqAbove / sqBelow mapped
+// quadratically toward it, then split so that none is longer than maxLength
+// nor, when nearSingular > 0, longer than max(its start, nearSingular)
+// (singularities at +-i nearSingular about 0).
+void BuildPanels(const std::vector<Point> &points, double maxLength, double nearSingular,
+                 std::vector<Panel> *out);
+
+// The node of a panel at u in [0, 1]; returns dv/du.
+inline double MapNode(const Panel &p, double u, double *v) {
+  const double len = p.b - p.a;
+  if (p.square == 2 || p.square == -2) {
+    const double sa = std::sqrt(std::abs(p.a - p.root)), sb = std::sqrt(std::abs(p.b - p.root));
+    const double t = sa + (sb - sa) * u;
+    *v = p.square == 2 ? p.root + t * t : p.root - t * t;
+    return 2.0 * t * std::abs(sb - sa);
+  }
+  if (p.square > 0) {
+    *v = p.a + len * u * u;
+    return 2.0 * len * u;
+  }
+  if (p.square < 0) {
+    *v = p.b - len * u * u;
+    return 2.0 * len * u;
+  }
+  *v = p.a + len * u;
+  return len;
+}
+
+}  // namespace lutbake::graded
