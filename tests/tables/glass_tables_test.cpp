@@ -16,6 +16,11 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "lutbake/api/bake.h"
+#include "lutbake/api/check.h"
+#include "lutbake/api/eval.h"
+#include "lutbake/api/plan.h"
+#include "lutbake/core/error.h"
 #include "lutbake/formats/binary_format.h"
 #include "lutbake/formats/table_reader.h"
 #include "lutbake/integrators/fresnel_average.h"
@@ -31,14 +36,35 @@ namespace lutbake {
 namespace {
 
 namespace fs = std::filesystem;
-using test::Lutbake;
 
-std::vector<nlohmann::json> JsonLines(const std::string &text) {
-  std::vector<nlohmann::json> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty()) lines.push_back(nlohmann::json::parse(line));
-  return lines;
+// `lutbake bake --out DIR --tables TABLES --size N [--eta-size M]
+// [--tolerance T] --format FORMATS` as the library call the command makes.
+BakeRequest TableBake(const fs::path &dir, const std::vector<std::string> &tables, int size,
+                      int etaSize, double tolerance, const std::vector<std::string> &formats) {
+  BakeRequest request;
+  request.outputDirectory = dir.string();
+  request.tables = tables;
+  request.size = size;
+  request.etaSize = etaSize;
+  request.sampling.tolerance = tolerance;
+  request.formats = formats;
+  return request;
+}
+
+// `lutbake check DIR [--points N]` as a library call.
+CheckOutcome CheckDirectory(const fs::path &dir, int points = 256) {
+  CheckRequest request;
+  request.dir = dir.string();
+  request.points = points;
+  return Check(request);
+}
+
+// `lutbake plan --json` of one scene or manifest, as a library call.
+nlohmann::json PlanOf(const std::string &scene, const std::string &manifest) {
+  PlanRequest request;
+  if (!scene.empty()) request.scenes = {scene};
+  if (!manifest.empty()) request.manifests = {manifest};
+  return nlohmann::json::parse(PlanJson(Plan(request)));
 }
 
 BakeSettings Model(NdfKind ndf, SmithForm smith) {
@@ -147,12 +173,15 @@ TEST(GlassTables, MatchIndependentReferenceWithinTheirBounds) {
 }
 
 TEST(GlassTables, EvalTakesThreeCoordinates) {
-  const test::CommandResult run = Lutbake(
-      "eval --table glass_E --mu 0.5,1 --roughness 0,0.5 --eta 1.5,0.6666666666666666 --json",
-      true);
-  ASSERT_EQ(run.status, 0) << run.output;
-  const auto lines = JsonLines(run.output);
-  ASSERT_EQ(lines.size(), 8u);
+  EvalRequest request;
+  request.table = "glass_E";
+  request.coordinates = {
+      {"mu", {0.5, 1}}, {"roughness", {0, 0.5}}, {"eta", {1.5, 0.6666666666666666}}};
+  const EvalResult eval = Evaluate(request);
+  ASSERT_EQ(eval.points.size(), 8u);
+  std::vector<nlohmann::json> lines;
+  for (size_t k = 0; k < eval.points.size(); ++k)
+    lines.push_back(nlohmann::json::parse(eval.JsonLine(k)));
   // z outermost, then y, x inner.
   EXPECT_EQ(double(lines[0]["eta"]), 1.5);
   EXPECT_EQ(double(lines[0]["roughness"]), 0.0);
@@ -163,15 +192,20 @@ TEST(GlassTables, EvalTakesThreeCoordinates) {
     EXPECT_GE(double(p["value"]), 0.0);
     EXPECT_LE(double(p["value"]), 1.0 + double(p["error"]));
   }
-  for (const std::string bad :
-       {"--table glass_E --mu 0.5 --roughness 0.5",
-        "--table glass_E --mu 0.5 --roughness 0.5 "
-        "--eta 130",
-        "--table glass_Eavg --mu 0.5 --roughness 0.5 --eta 1.5",
-        "--table glass_E --mu 0.5 --roughness 0.5 --eta 1.5 --estimator cosine"}) {
-    const test::CommandResult r = Lutbake("eval " + bad);
-    EXPECT_EQ(r.status, 2) << bad << "\n" << r.output;
-  }
+  // No eta; eta out of range; eta given to a table without it; an estimator
+  // the table does not offer: usage errors (exit 2 on the command line).
+  const std::map<std::string, std::vector<double>> point{{"mu", {0.5}}, {"roughness", {0.5}}};
+  std::vector<EvalRequest> bad(4, request);
+  bad[0].coordinates = point;
+  bad[1].coordinates = point;
+  bad[1].coordinates["eta"] = {130};
+  bad[2].table = "glass_Eavg";
+  bad[2].coordinates = point;
+  bad[2].coordinates["eta"] = {1.5};
+  bad[3].coordinates = point;
+  bad[3].coordinates["eta"] = {1.5};
+  bad[3].sampling.estimator = Estimator::kCosine;
+  for (size_t k = 0; k < bad.size(); ++k) EXPECT_THROW(Evaluate(bad[k]), UsageError) << k;
 }
 
 // A small bake of the two 3D tables in every format, then `lutbake check`:
@@ -179,25 +213,23 @@ TEST(GlassTables, EvalTakesThreeCoordinates) {
 // adaptive reference, trilinear lookups at random points.
 TEST(GlassTables, SmallBakePassesCheck) {
   const fs::path dir = test::Scratch("glass_bake");
-  const test::CommandResult bake =
-      Lutbake("bake --out " + dir.string() +
-              " --tables glass_E,spec_E --size 4 --eta-size 2 --tolerance 1e-6 --format "
-              "exr,bin,header --error-map");
-  ASSERT_EQ(bake.status, 0) << bake.output;
+  BakeRequest request = TableBake(dir, {"glass_E", "spec_E"}, 4, 2, 1e-6, {"exr", "bin", "header"});
+  request.errorMaps = true;
+  Bake(request);
   const Table exr = ReadExrTable((dir / "glass_E.exr").string());
   ASSERT_TRUE(exr.is3D());
   EXPECT_EQ(exr.z.count, 2);  // --eta-size 2: eta = 1/3 and 3 (s = -+1/2), no material nodes
   const Table bin = ReadBinaryTable((dir / "glass_E.bin").string());
   ASSERT_EQ(bin.values.size(), exr.values.size());
-  const test::CommandResult check = Lutbake("check " + dir.string());
-  EXPECT_EQ(check.status, 0) << check.output;
-  EXPECT_NE(check.output.find("glass_E texels"), std::string::npos) << check.output;
+  const CheckOutcome check = CheckDirectory(dir);
+  EXPECT_TRUE(check.passed) << check.text << check.failureText;
+  EXPECT_NE(check.text.find("glass_E texels"), std::string::npos) << check.text;
   // Both tables' random points, through the trilinear lookup.
   size_t trilinear = 0;
-  for (size_t at = check.output.find("trilinear lookup"); at != std::string::npos;
-       at = check.output.find("trilinear lookup", at + 1))
+  for (size_t at = check.text.find("trilinear lookup"); at != std::string::npos;
+       at = check.text.find("trilinear lookup", at + 1))
     ++trilinear;
-  EXPECT_EQ(trilinear, 2u) << check.output;
+  EXPECT_EQ(trilinear, 2u) << check.text;
   fs::remove_all(dir);
 }
 
@@ -225,17 +257,11 @@ const CheckResult *Find(const CheckReport &r, const std::string &subject,
 TEST(GlassTables, CheckHoldsSliceLimitAndReciprocity) {
   const fs::path dir = test::Scratch("glass_claims");
   // eta-size 3: eta = 1/3, 1, 3.
-  test::CommandResult bake = Lutbake("bake --out " + dir.string() +
-                                     " --tables glass_E,spec_E --size 4 --eta-size 3 "
-                                     "--tolerance 1e-6 --format bin");
-  ASSERT_EQ(bake.status, 0) << bake.output;
+  Bake(TableBake(dir, {"glass_E", "spec_E"}, 4, 3, 1e-6, {"bin"}));
   // The averages (slower: --size 2) in a directory of their own: a bake into
   // a directory replaces the set there.
   const fs::path averages = test::Scratch("glass_claims_averages");
-  bake = Lutbake("bake --out " + averages.string() +
-                 " --tables glass_Eavg,spec_Eavg --size 2 --eta-size 3 --tolerance 1e-6 "
-                 "--format bin");
-  ASSERT_EQ(bake.status, 0) << bake.output;
+  Bake(TableBake(averages, {"glass_Eavg", "spec_Eavg"}, 2, 3, 1e-6, {"bin"}));
   CheckOptions quick;
   quick.randomPoints = 2;
   const auto statusOf = [](const CheckReport &r, const std::string &subject,
@@ -288,27 +314,25 @@ TEST(GlassTables, CheckHoldsSliceLimitAndReciprocity) {
 // and checked; a transmissionFactor of 0 plans nothing and says so.
 TEST(GlassTables, SceneWithTransmissionIsPlannedAndBaked) {
   const std::string scene = LUTBAKE_TEST_DATA "/plans/glass.gltf";
-  const test::CommandResult plan = Lutbake("plan --json --scene " + scene, true);
-  ASSERT_EQ(plan.status, 0) << plan.output;
-  const nlohmann::json j = nlohmann::json::parse(plan.output);
+  const nlohmann::json j = PlanOf(scene, "");
   const nlohmann::json *glass = nullptr;
   for (const auto &t : j["tables"])
     if (t["name"] == "glass_E") glass = &t;
-  ASSERT_NE(glass, nullptr) << plan.output;
+  ASSERT_NE(glass, nullptr) << j.dump(2);
   EXPECT_EQ((*glass)["eta"], (std::vector<double>{1 / 1.5, 1 / 1.33, 1.33, 1.5}));
   EXPECT_EQ((*glass)["roughness"]["values"], (std::vector<double>{0.25, 0.5}));
   EXPECT_EQ((*glass)["materials"], (std::vector<std::string>{"window", "frosted water"}));
-  EXPECT_NE(plan.output.find("transmissionFactor 0: no transmission lobe"), std::string::npos);
+  EXPECT_NE(j.dump().find("transmissionFactor 0: no transmission lobe"), std::string::npos);
   const fs::path dir = test::Scratch("glass_scene");
-  const test::CommandResult bake = Lutbake("bake --out " + dir.string() + " --scene " + scene +
-                                           " --tables glass_E --size 8 --format exr,bin");
-  ASSERT_EQ(bake.status, 0) << bake.output;
+  BakeRequest request = TableBake(dir, {"glass_E"}, 8, 0, 0, {"exr", "bin"});
+  request.scenes = {scene};
+  Bake(request);
   const Table t = ReadBinaryTable((dir / "glass_E.bin").string());
   ASSERT_TRUE(t.is3D());
   EXPECT_EQ(t.z.nodes, (std::vector<double>{1 / 1.5, 1 / 1.33, 1.33, 1.5}));
   EXPECT_EQ(t.y.nodes, (std::vector<double>{0.25, 0.5}));
-  const test::CommandResult check = Lutbake("check " + dir.string());
-  EXPECT_EQ(check.status, 0) << check.output;
+  const CheckOutcome check = CheckDirectory(dir);
+  EXPECT_TRUE(check.passed) << check.text << check.failureText;
   fs::remove_all(dir);
 }
 
@@ -321,9 +345,7 @@ TEST(GlassTables, SceneWithTransmissionIsPlannedAndBaked) {
 TEST(GlassTables, ManifestWithCoatsIsPlannedAndBaked) {
   const std::string manifest = LUTBAKE_TEST_DATA "/plans/coat.json";
   const std::vector<double> etas{1 / 1.5, 1 / 1.33, 1.33, 1.5};
-  const test::CommandResult plan = Lutbake("plan --json --manifest " + manifest, true);
-  ASSERT_EQ(plan.status, 0) << plan.output;
-  const nlohmann::json j = nlohmann::json::parse(plan.output);
+  const nlohmann::json j = PlanOf("", manifest);
   std::vector<std::string> names;
   for (const auto &t : j["tables"]) names.push_back(t["name"]);
   EXPECT_EQ(names, (std::vector<std::string>{"E", "Eavg", "Favg_dielectric", "Favg_conductor",
@@ -331,10 +353,9 @@ TEST(GlassTables, ManifestWithCoatsIsPlannedAndBaked) {
   EXPECT_EQ(j["tables"][5]["eta"], etas);
   EXPECT_EQ(j["tables"][6]["eta"], etas);
   const fs::path dir = test::Scratch("coat_manifest");
-  const test::CommandResult bake =
-      Lutbake("bake --out " + dir.string() + " --manifest " + manifest +
-              " --tables spec_E,spec_Eavg --size 4 --format exr,bin");
-  ASSERT_EQ(bake.status, 0) << bake.output;
+  BakeRequest request = TableBake(dir, {"spec_E", "spec_Eavg"}, 4, 0, 0, {"exr", "bin"});
+  request.manifests = {manifest};
+  Bake(request);
   EXPECT_EQ(test::FileNames(dir),
             (std::vector<std::string>{"lutbake-set.json", "spec_E.bin", "spec_E.exr",
                                       "spec_Eavg.bin", "spec_Eavg.exr"}));
@@ -347,10 +368,10 @@ TEST(GlassTables, ManifestWithCoatsIsPlannedAndBaked) {
   const Table average = ReadBinaryTable((dir / "spec_Eavg.bin").string());
   EXPECT_EQ(average.x.nodes, std::vector<double>{0.1});
   EXPECT_EQ(average.y.nodes, etas);
-  const test::CommandResult check = Lutbake("check " + dir.string() + " --points 0");
-  EXPECT_EQ(check.status, 0) << check.output;
+  const CheckOutcome check = CheckDirectory(dir, 0);
+  EXPECT_TRUE(check.passed) << check.text << check.failureText;
   for (const char *subject : {"spec_E  texels", "spec_Eavg texels", "spec_E+spec_Eavg average"})
-    EXPECT_NE(check.output.find(subject), std::string::npos) << subject << "\n" << check.output;
+    EXPECT_NE(check.text.find(subject), std::string::npos) << subject << "\n" << check.text;
   fs::remove_all(dir);
 }
 
@@ -385,18 +406,11 @@ TEST(GlassTables, BitIdenticalForOneAndTwoThreads) {
 
 TEST(GlassTables, HeaderHelpersCompileAndLookUp) {
   const fs::path dir = test::Scratch("glass_header");
-  const test::CommandResult bake = Lutbake("bake --out " + dir.string() +
-                                           " --tables glass_E,spec_E --size 4 --eta-size 3 "
-                                           "--format header");
-  ASSERT_EQ(bake.status, 0) << bake.output;
+  Bake(TableBake(dir, {"glass_E", "spec_E"}, 4, 3, 0, {"header"}));
   // The averages (slower: --size 2) in a directory of their own, since a bake
   // replaces the set in its directory; the program includes both.
   const fs::path averageDir = test::Scratch("glass_header_averages");
-  const test::CommandResult averages =
-      Lutbake("bake --out " + averageDir.string() +
-              " --tables glass_Eavg,spec_Eavg --size 2 --eta-size 3 --tolerance 1e-6 "
-              "--format header");
-  ASSERT_EQ(averages.status, 0) << averages.output;
+  Bake(TableBake(averageDir, {"glass_Eavg", "spec_Eavg"}, 2, 3, 1e-6, {"header"}));
   for (const char *header : {"glass_Eavg.h", "spec_Eavg.h"})
     fs::copy_file(averageDir / header, dir / header);
   fs::remove_all(averageDir);
