@@ -220,6 +220,15 @@ EvalResult Evaluate(const EvalRequest &r) {
   }
 
   result.channelMeanings = table.ChannelMeanings();
+  if (settings.estimator == Estimator::kQuadrature || !table.Sampled()) {
+    result.method = table.QuadratureDescription(settings);
+    if (const std::string bound = table.QuadratureBound(settings); !bound.empty())
+      result.method += "; error: " + bound;
+  } else {
+    result.method = std::string(ToString(settings.estimator)) + " sampling";
+    if (const std::string note = table.SamplerNote(settings); !note.empty())
+      result.method += "; " + note;
+  }
   const int channels = table.Channels();
   for (size_t i = 0; i < at.size(); ++i) {
     const PointValue &v = pointValues[i];

@@ -70,6 +70,7 @@ void SetupEvalCommand(CLI::App &app, EvalOptions &o) {
   app.add_flag("--json", o.json,
                "One JSON object per point and line: table, the coordinates, value, error "
                "(value and error are [A, B] for dfg), estimator, samples");
+  app.add_flag("-v,--verbose", o.verbose, "Also say how the values are made (on stderr)");
   app.footer(
       "Without --samples, --tolerance or --estimator the points are integrated by the\n"
       "quadrature (error ~1e-10). --samples N (or --estimator vndf) evaluates them as a bake\n"
@@ -86,6 +87,7 @@ int RunEval(const EvalOptions &o, CLI::App &app) {
   const EvalRequest request = RequestOf(o, app);
   return RunLibraryCall("eval", "", [&] {
     const EvalResult result = Evaluate(request);
+    if (o.verbose) std::cerr << "lutbake eval: " << result.method << "\n";
     for (size_t i = 0; i < result.points.size(); ++i)
       std::cout << (o.json ? result.JsonLine(i) + "\n" : result.TextLine(i));
   });

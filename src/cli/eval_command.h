@@ -24,6 +24,7 @@ struct EvalOptions {
   SamplingOptions sampling;
   int threads = 0;
   bool json = false;
+  bool verbose = false;
 };
 
 void SetupEvalCommand(CLI::App &app, EvalOptions &options);

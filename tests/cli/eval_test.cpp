@@ -148,6 +148,24 @@ TEST(Eval, HumanOutputIsOneLinePerPoint) {
   EXPECT_NE(run.output.find("E 1  error 0  (exact)"), std::string::npos) << run.output;
 }
 
+// -v: first a line saying how the values are made, as the table's
+// definition states it (the closed form of burley_E, the panel rule of E,
+// the sampler when one is asked), then the points as without it.
+TEST(Eval, VerboseSaysHowTheValuesAreMade) {
+  struct Case {
+    const char *options, *method;
+  };
+  for (const Case &c :
+       {Case{"--table E --mu 0.5 --roughness 0.3", "lutbake eval: panel Gauss-Legendre quadrature"},
+        Case{"--table burley_E --mu 0.5 --roughness 0.3", "lutbake eval: closed form: "},
+        Case{"--table E --mu 0.5 --roughness 0.3 --samples 64", "lutbake eval: vndf sampling"}}) {
+    const test::CommandResult run = Lutbake("eval -v " + std::string(c.options));
+    ASSERT_EQ(run.status, 0) << run.output;
+    EXPECT_EQ(run.output.rfind(c.method, 0), 0u) << run.output;
+    EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 2) << run.output;
+  }
+}
+
 TEST(Eval, BadInputIsRefused) {
   struct Bad {
     std::string args, mentions;

@@ -86,6 +86,9 @@ struct EvalResult {
   Metadata labels;                           // the variant: {"fresnel", "schlick"}, ...
   std::vector<std::string> coordinateNames;  // "mu", "roughness", ...
   std::vector<std::string> channelMeanings;  // "E"; "A", "B"
+  // How the values were made and what their errors are, in words: the
+  // quadrature's description and bound (TableDefinition), or the sampler's.
+  std::string method;
   std::vector<EvalPoint> points;
   // `eval --json`'s line for points[i]: table, labels, coordinates, value,
   // error (arrays for two channels or more: [A, B]), the fit's measures of a
