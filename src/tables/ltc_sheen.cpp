@@ -130,7 +130,8 @@ class LtcSheen final : public LtcTableDefinition<SheenTable> {
                                        : "[0, 1]"));
   }
   std::string LobeErrorRule() const override {
-    return "half-vector rule of width max(alpha, 1e-3), within ~2e-3 of its next level";
+    return "half-vector rule of width max(alpha, 1e-3), within 6e-3 of its next level (measured at "
+           "64 x 64: worst 5.2e-3, at the smallest roughness)";
   }
 
   HeaderText Header(const Table &table) const override {

@@ -139,7 +139,7 @@ TEST(LtcSheen, StatedLobeErrorAgreesWithTheNextLevel) {
       EXPECT_LT(t.fitMaps[texel * 3 + 2], 0.1);
       EXPECT_DOUBLE_EQ(t.fitMaps[texel * 3 + 2], LtcLeakage(stored));
     }
-  EXPECT_LT(worstDifference, 2e-3);
+  EXPECT_LT(worstDifference, 2e-3);  // 64 x 64: 4.8e-3 (alpha = r), 5.2e-3 (r^2), at r = 1/128
   EXPECT_LT(mean, 0.2);
 }
 
