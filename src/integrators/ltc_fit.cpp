@@ -7,7 +7,10 @@
 #include <cmath>
 
 #include "lutbake/integrators/albedo_quadrature.h"
+#include "lutbake/integrators/gauss_kronrod.h"
+#include "lutbake/integrators/light_direction_rule.h"
 #include "lutbake/integrators/sheen_quadrature.h"
+#include "lutbake/models/burley.h"
 
 namespace lutbake {
 
@@ -19,11 +22,24 @@ Vec3 Cross(const Vec3 &a, const Vec3 &b) {
 
 }  // namespace
 
+std::vector<LtcNode> LtcLobeRule(const LtcLobe &lobe, double mu_o, int level, bool halfCircle) {
+  return lobe.quadrature == LtcQuadrature::kLightDirection
+             ? LightDirectionRule(mu_o, level, halfCircle)
+             : HalfVectorRule(mu_o, lobe.quadratureAlpha, level, halfCircle);
+}
+
+std::vector<LtcNode> LtcLobePolygonRule(const LtcLobe &lobe, double mu_o, int level,
+                                        const Vec3 *vertices, int count) {
+  return lobe.quadrature == LtcQuadrature::kLightDirection
+             ? LightDirectionPolygonRule(mu_o, level, vertices, count)
+             : HalfVectorPolygonRule(mu_o, lobe.quadratureAlpha, level, vertices, count);
+}
+
 void IntegrateLobeMoments(const LtcLobe &lobe, double mu_o, int level, double *magnitude,
                           double *fresnel) {
   const Vec3 o = ViewDirection(mu_o);
   double m = 0.0, f = 0.0;
-  for (const LtcNode &n : HalfVectorRule(mu_o, lobe.quadratureAlpha, level, true)) {
+  for (const LtcNode &n : LtcLobeRule(lobe, mu_o, level, true)) {
     const double value = n.weight * lobe.cosineWeighted(mu_o, n.l);
     m += value;
     f += value * Pow5(1.0 - Dot(o, n.h));
@@ -87,6 +103,62 @@ LtcLobe SheenLtcLobe(SheenVisibility visibility, double alpha) {
   return lobe;
 }
 
+LtcLobe BurleyLtcLobe(double perceptualRoughness) {
+  LtcLobe lobe;
+  lobe.quadrature = LtcQuadrature::kLightDirection;
+  lobe.cosineWeighted = [perceptualRoughness](double mu_o, const Vec3 &l) {
+    if (l.z <= 0.0) return 0.0;
+    return BurleyDiffuseBrdf(perceptualRoughness, ViewDirection(mu_o), l) * l.z;
+  };
+  return lobe;
+}
+
+LtcLobe OrenNayarLtcLobe(OrenNayarVariant variant, double sigma) {
+  LtcLobe lobe;
+  lobe.quadrature = LtcQuadrature::kLightDirection;
+  lobe.cosineWeighted = [variant, sigma](double mu_o, const Vec3 &l) {
+    if (l.z <= 0.0) return 0.0;
+    return OrenNayarBrdf(variant, sigma, ViewDirection(mu_o), l) * l.z;
+  };
+  return lobe;
+}
+
+LtcMomentsReference IntegrateLobeMomentsAdaptive(const LtcLobe &lobe, double mu_o,
+                                                 double tolerance) {
+  const Vec3 o = ViewDirection(mu_o);
+  const double thetaO = std::acos(Clamp(mu_o, 0.0, 1.0));
+  std::vector<double> outer = {0.0, 0.5 * kPi};
+  if (thetaO > 0.0 && thetaO < 0.5 * kPi) outer = {0.0, thetaO, 0.5 * kPi};
+  int inner = 0;
+  // Channels: magnitude, fresnel, and the inner estimates of both.
+  const QuadratureResultN<4> q = IntegrateAdaptiveN<4>(
+      [&](double theta) {
+        const double st = std::sin(theta), ct = std::cos(theta);
+        const QuadratureResultN<2> ring = IntegrateAdaptiveN<2>(
+            [&](double phi) {
+              const Vec3 l{st * std::cos(phi), st * std::sin(phi), ct};
+              const Vec3 sum{o.x + l.x, o.y + l.y, o.z + l.z};
+              const double vh = Dot(sum, sum) > 0.0 ? Dot(o, Normalize(sum)) : 0.0;
+              const double f = lobe.cosineWeighted(mu_o, l);
+              return std::array<double, 2>{f, f * Pow5(1.0 - vh)};
+            },
+            {0.0, 0.5 * kPi, kPi}, 0.1 * tolerance);
+        inner += ring.evaluations;
+        const double w = 2.0 * st;
+        return std::array<double, 4>{w * ring.value[0], w * ring.value[1], w * ring.error[0],
+                                     w * ring.error[1]};
+      },
+      outer, tolerance);
+  LtcMomentsReference r;
+  r.magnitude = q.value[0];
+  r.fresnel = q.value[1];
+  constexpr double kFactor = 16.0;  // the house factor over the Gauss-Kronrod estimate
+  r.magnitudeBound = kFactor * (q.error[0] + q.value[2]) + 1e-13;
+  r.fresnelBound = kFactor * (q.error[1] + q.value[3]) + 1e-13;
+  r.evaluations = static_cast<uint64_t>(inner);
+  return r;
+}
+
 const std::vector<LtcRectangle> &LtcTestRectangles() {
   // {polar angle of the centre, its azimuth (0: the view's side, 180: the
   //  mirror direction's), half-width, half-height, roll}, degrees.
@@ -127,7 +199,7 @@ std::vector<double> RectangleLobeIntegrals(const LtcLobe &lobe, double mu_o, int
   std::vector<double> out;
   for (const LtcRectangle &r : LtcTestRectangles()) {
     double sum = 0.0;
-    for (const LtcNode &n : HalfVectorPolygonRule(mu_o, lobe.quadratureAlpha, level, r.vertices, 4))
+    for (const LtcNode &n : LtcLobePolygonRule(lobe, mu_o, level, r.vertices, 4))
       sum += n.weight * lobe.cosineWeighted(mu_o, n.l);
     out.push_back(sum);
   }
@@ -168,7 +240,7 @@ LtcErrors MeasureLtcErrors(const LtcLobe &lobe, double mu_o, double magnitude,
 
 double LtcLobeError(const LtcLobe &lobe, double mu_o, double magnitude, double ltcMagnitude,
                     const LtcMatrix &minv, int level) {
-  const std::vector<LtcNode> nodes = HalfVectorRule(mu_o, lobe.quadratureAlpha, level, true);
+  const std::vector<LtcNode> nodes = LtcLobeRule(lobe, mu_o, level, true);
   std::vector<double> values(nodes.size());
   for (size_t k = 0; k < nodes.size(); ++k) values[k] = lobe.cosineWeighted(mu_o, nodes[k].l);
   return LobeError(nodes, values, magnitude, ltcMagnitude / magnitude, minv);
@@ -311,7 +383,7 @@ LtcTexel FitLtcTexel(const LtcLobe &lobe, double mu_o, const LtcMatrix &start,
   } else {
     IntegrateLobeMoments(lobe, mu_o, 1, &out.magnitude, &out.fresnel);
   }
-  const std::vector<LtcNode> nodes = HalfVectorRule(mu_o, lobe.quadratureAlpha, 0, true);
+  const std::vector<LtcNode> nodes = LtcLobeRule(lobe, mu_o, 0, true);
   // The lobe normalised by the rule's own integral, so that Q[f / m] = 1 and
   // the objective is the rule's L1 error of two unit densities.
   std::vector<LtcNode> used;

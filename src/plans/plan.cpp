@@ -263,11 +263,14 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
     for (const TableDefinition *table : TablesFor(PlanRole::kSheenAlbedoScaling))
       roughnessTable(*table, Model{NdfKind::kGgx, SmithForm::kCorrelated}, sheen, false);
 
-  // Area lights: the LTC fit of each specular lobe, over its roughness (the
-  // sheen's LTC is not a table yet).
+  // Area lights: the LTC fit of each specular lobe, over its roughness, and
+  // of the sheen lobe over every sheen roughness.
   for (const auto &[model, uses] : area)
     for (const TableDefinition *table : TablesFor(PlanRole::kAreaLights))
       roughnessTable(*table, model, uses);
+  if (options.areaLights.value_or(false) && !sheen.materials.empty())
+    for (const TableDefinition *table : TablesFor(PlanRole::kSheenAreaLights))
+      roughnessTable(*table, Model{NdfKind::kGgx, SmithForm::kCorrelated}, sheen, false);
 
   // Rough transmission: over the roughness used, and a listed eta axis at
   // exactly the IORs used, both sides (the third axis of glass_E, the
@@ -366,6 +369,13 @@ BakePlan MakePlan(const std::vector<MaterialSpec> &materials, const PlanOptions 
          : options.areaLights.has_value()
              ? "area lights are off (the manifest's \"areaLights\" sets it false)"
              : "no manifest asks for area lights (\"areaLights\": true)");
+  if (!has(PlanRole::kSheenAreaLights))
+    omit(PlanRole::kSheenAreaLights,
+         !nothingLit.empty() ? nothingLit
+         : !options.areaLights.value_or(false)
+             ? "no manifest asks for area lights (\"areaLights\": true), or it sets them false"
+             : "no material has a sheen layer (KHR_materials_sheen with a sheenColorFactor above "
+               "0, or a manifest's \"sheenRoughness\")");
   return plan;
 }
 
@@ -407,7 +417,7 @@ std::string PlanJson(const BakePlan &plan) {
         j["eta"] = CoveredJson(t.eta);
         if (t.fresnel == FresnelModel::kConductor) j["k"] = CoveredJson(t.k);
       }
-    } else if (role == PlanRole::kSheenAlbedoScaling) {
+    } else if (role == PlanRole::kSheenAlbedoScaling || role == PlanRole::kSheenAreaLights) {
       j["sheenRoughness"] = CoveredJson(t.roughness);
     } else if (role == PlanRole::kGlassCompensation || role == PlanRole::kDielectricLayering) {
       j["ndf"] = ToString(t.ndf);
@@ -514,7 +524,8 @@ std::string DescribePlan(const BakePlan &plan) {
     s << "  (";
     if (t.definition->Role() == PlanRole::kFresnelAverage)
       s << ToString(t.fresnel);
-    else if (t.definition->Role() == PlanRole::kSheenAlbedoScaling)
+    else if (t.definition->Role() == PlanRole::kSheenAlbedoScaling ||
+             t.definition->Role() == PlanRole::kSheenAreaLights)
       s << "charlie sheen";
     else
       s << ToString(t.ndf) << ", " << ToString(t.smith);

@@ -43,8 +43,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "burley_model.h"
 #include "lutbake/core/math.h"
 #include "lutbake/integrators/gauss_kronrod.h"
+#include "lutbake/models/burley.h"
 #include "lutbake/tables/bake.h"
 
 namespace lutbake {
@@ -62,19 +64,7 @@ double BurleyAlbedoClosedForm(double mu, double r) {
   return (492.0 + view + b * lobe) / 504.0;
 }
 
-// f_d(v, l) as Burley writes it, cos(theta_d) = l.h with h = (v + l) / |v +
-// l| (l = -v, where h is undefined, happens only at the grazing horizon:
-// measure zero; cos(theta_d) = 0 there).
-double BurleyDiffuseBrdf(double r, const Vec3 &v, const Vec3 &l) {
-  const Vec3 sum{v.x + l.x, v.y + l.y, v.z + l.z};
-  const double length2 = Dot(sum, sum);
-  const double lh = length2 > 0.0 ? Dot(l, sum) / std::sqrt(length2) : 0.0;
-  const double fd90 = 0.5 + 2.0 * r * lh * lh;
-  const auto schlick = [fd90](double u) { return 1.0 + (fd90 - 1.0) * std::pow(1.0 - u, 5.0); };
-  return schlick(l.z) * schlick(v.z) * kInvPi;
-}
-
-class BurleyAlbedo final : public TableDefinition {
+class BurleyAlbedo final : public BurleyModelTable {
  public:
   const char *Name() const override { return "burley_E"; }
   uint64_t SeedId() const override { return 12; }
@@ -82,43 +72,6 @@ class BurleyAlbedo final : public TableDefinition {
     return "directional albedo of Burley's (Disney 2012) diffuse, base colour 1, over (mu, r); "
            "closed form";
   }
-  void Axes(const BakeSettings &, int size, Axis *x, Axis *y) const override {
-    *x = MuAxis(size);
-    *y = RoughnessAxis(size);
-  }
-  std::vector<PointCoordinate> Coordinates(const BakeSettings &) const override {
-    PointCoordinate mu;
-    mu.option = "mu";
-    mu.accepted = "comma-separated numbers in [0, 1]";
-    PointCoordinate r;
-    r.option = "roughness";
-    r.accepted = "comma-separated numbers in [0, 1] (perceptual roughness)";
-    return {mu, r};
-  }
-
-  std::vector<std::string> ModelOptions() const override { return {}; }
-  Metadata ModelMetadata(const BakeSettings &) const override {
-    return {{"model", kModel}, {"reflectance", "1"}};
-  }
-  std::string AlphaMetadata(const BakeSettings &) const override {
-    return "n/a: perceptualRoughness r enters F_D90 = 0.5 + 2 r cos^2(theta_d) alone";
-  }
-  std::string DescribeModel(const BakeSettings &) const override { return kModel; }
-  bool ReadModel(const Table &table, BakeSettings *,
-                 std::vector<std::string> *problems) const override {
-    const size_t before = problems->size();
-    const std::string model = RequiredMetadata(table, "model", problems);
-    if (!model.empty() && model != kModel)
-      problems->push_back("model '" + model + "', expected '" + kModel + "'");
-    if (table.x.name != "mu" || table.x.min < 0.0 || table.x.max > 1.0)
-      problems->push_back("the x axis is not mu within [0, 1]");
-    if (!table.is2D() || table.y.name != "perceptualRoughness" || table.y.min < 0.0 ||
-        table.y.max > 1.0)
-      problems->push_back("the y axis is not perceptualRoughness within [0, 1]");
-    return problems->size() == before;
-  }
-  bool SameModel(const BakeSettings &, const BakeSettings &) const override { return true; }
-
   // Deterministic only: the closed form, or the reference below.
   bool Sampled() const override { return false; }
   uint64_t SamplesPerTexel(const BakeSettings &) const override { return 0; }
@@ -201,8 +154,6 @@ class BurleyAlbedo final : public TableDefinition {
   }
 
  private:
-  static constexpr const char *kModel = "burley diffuse (disney 2012)";
-
   // The reference: integral over theta_l in [0, pi/2] and phi in [0, pi] (f
   // is even in phi) of 2 f mu_l sin(theta_l), the inner estimate carried as
   // the outer's second channel. The integrand is smooth: no breaks.

@@ -21,5 +21,8 @@ const TableDefinition &OrenNayarAlbedoTable();        // oren_nayar_E.cpp
 const TableDefinition &OrenNayarFullAlbedoTable();    // oren_nayar_E.cpp
 const TableDefinition &BurleyAlbedoTable();           // burley_E.cpp
 const TableDefinition &LtcGgxTable();                 // ltc_ggx.cpp
+const TableDefinition &LtcSheenTable();               // ltc_sheen.cpp
+const TableDefinition &LtcBurleyTable();              // ltc_burley.cpp
+const TableDefinition &LtcOrenNayarTable();           // ltc_oren_nayar.cpp
 
 }  // namespace lutbake

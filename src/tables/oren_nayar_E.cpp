@@ -28,17 +28,16 @@
 #include "lutbake/integrators/gauss_kronrod.h"
 #include "lutbake/models/oren_nayar.h"
 #include "lutbake/tables/bake.h"
+#include "oren_nayar_model.h"
 
 namespace lutbake {
 
 namespace {
 
-constexpr double kMaxSigma = 0.5 * kPi;
-
-class OrenNayarAlbedo final : public TableDefinition {
+class OrenNayarAlbedo final : public OrenNayarModelTable {
  public:
   OrenNayarAlbedo(const char *name, uint64_t seedId, OrenNayarVariant variant)
-      : name_(name), seedId_(seedId), variant_(variant) {}
+      : OrenNayarModelTable(variant), name_(name), seedId_(seedId) {}
   const char *Name() const override { return name_; }
   uint64_t SeedId() const override { return seedId_; }
   std::string Summary() const override {
@@ -47,37 +46,6 @@ class OrenNayarAlbedo final : public TableDefinition {
                : "directional albedo of the full Oren-Nayar model (C1, C2, C3, interreflection), "
                  "over (mu, sigma)";
   }
-  void Axes(const BakeSettings &, int size, Axis *x, Axis *y) const override {
-    *x = MuAxis(size);
-    *y = LinearAxis("sigma", 0.0, kMaxSigma, size);
-  }
-  std::vector<PointCoordinate> Coordinates(const BakeSettings &) const override {
-    PointCoordinate mu;
-    mu.option = "mu";
-    mu.accepted = "comma-separated numbers in [0, 1]";
-    PointCoordinate sigma;
-    sigma.option = "sigma";
-    sigma.max = kMaxSigma;
-    sigma.accepted = "comma-separated numbers in [0, pi/2] (radians)";
-    sigma.meaning = "the facet slope angle's standard deviation, radians";
-    return {mu, sigma};
-  }
-  std::vector<std::string> ModelOptions() const override { return {}; }
-  Metadata ModelMetadata(const BakeSettings &) const override {
-    return {{"model", Model()}, {"reflectance", "1"}};
-  }
-  std::string AlphaMetadata(const BakeSettings &) const override {
-    return "sigma = the standard deviation of the facet slope angle, radians";
-  }
-  std::string DescribeModel(const BakeSettings &) const override { return Model(); }
-  bool ReadModel(const Table &table, BakeSettings *,
-                 std::vector<std::string> *problems) const override {
-    const std::string model = RequiredMetadata(table, "model", problems);
-    if (!model.empty() && model != Model())
-      problems->push_back("model '" + model + "', expected '" + Model() + "'");
-    return problems->empty();
-  }
-  bool SameModel(const BakeSettings &, const BakeSettings &) const override { return true; }
   // Deterministic only: the furnace's rule, or the reference below.
   bool Sampled() const override { return false; }
   uint64_t SamplesPerTexel(const BakeSettings &) const override { return 0; }
@@ -141,11 +109,6 @@ class OrenNayarAlbedo final : public TableDefinition {
   }
 
  private:
-  std::string Model() const {
-    return variant_ == OrenNayarVariant::kQualitative ? "oren-nayar qualitative (A + B)"
-                                                      : "oren-nayar full (C1, C2, C3, L2)";
-  }
-
   // The reference: integral over theta_i in [0, pi/2] and dphi in [0, pi]
   // (f is even in dphi) of 2 f mu_i sin(theta_i), the inner estimate
   // carried as the outer's second channel.
@@ -172,7 +135,6 @@ class OrenNayarAlbedo final : public TableDefinition {
 
   const char *name_;
   uint64_t seedId_;
-  OrenNayarVariant variant_;
 };
 
 }  // namespace

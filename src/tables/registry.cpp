@@ -25,6 +25,9 @@ const std::vector<const TableDefinition *> &AllTables() {
       &OrenNayarFullAlbedoTable(),
       &BurleyAlbedoTable(),
       &LtcGgxTable(),
+      &LtcSheenTable(),
+      &LtcBurleyTable(),
+      &LtcOrenNayarTable(),
   };
   // clang-format on
   return tables;

@@ -196,13 +196,45 @@ TEST(Plan, AreaLightsAddTheLtcTableOfEachLobe) {
       InputError);
 }
 
+// With area lights, a material with a sheen layer adds ltc_sheen over the
+// sheen roughness used (one table, as sheen_E); without a sheen, or without
+// area lights, it is left out and the plan says why.
+TEST(Plan, AreaLightsAddTheSheenLtcWhereAMaterialHasSheen) {
+  const Manifest m = ParseManifest(
+      R"({"areaLights": true, "materials": [
+            {"name": "velvet", "roughness": 0.5, "sheenRoughness": {"min": 0.3, "max": 0.7}},
+            {"name": "floor", "roughness": 0.4}]})",
+      "sheen_area.json");
+  PlanOptions options;
+  options.areaLights = m.areaLights;
+  const BakePlan plan = MakePlan(m.materials, options);
+  const PlannedTable *sheen = Find(plan, "ltc_sheen");
+  ASSERT_NE(sheen, nullptr);
+  EXPECT_DOUBLE_EQ(sheen->roughness.min, 0.3);
+  EXPECT_DOUBLE_EQ(sheen->roughness.max, 0.7);
+  EXPECT_EQ(sheen->materials, std::vector<std::string>{"velvet"});
+  EXPECT_EQ(sheen->y.name, "sheenRoughness");
+  EXPECT_NE(Find(plan, "ltc_ggx"), nullptr);
+  EXPECT_NE(Find(plan, "sheen_E"), nullptr);
+  EXPECT_NE(PlanJson(plan).find("\"sheenRoughness\""), std::string::npos);
+
+  EXPECT_EQ(Find(MakePlan(m.materials, PlanOptions{}), "ltc_sheen"), nullptr);
+  EXPECT_NE(Omitted(MakePlan(m.materials, PlanOptions{}), "ltc_sheen").find("areaLights"),
+            std::string::npos);
+  const Manifest plain = ParseManifest(
+      R"({"areaLights": true, "materials": [{"name": "floor", "roughness": 0.4}]})", "p.json");
+  const BakePlan noSheen = MakePlan(plain.materials, options);
+  EXPECT_EQ(Find(noSheen, "ltc_sheen"), nullptr);
+  EXPECT_NE(Omitted(noSheen, "ltc_sheen").find("no material has a sheen layer"), std::string::npos);
+}
+
 TEST(Plan, NothingNeededIsSaidSo) {
   for (const char *scene : {"unlit.gltf", "no_lobe.gltf"}) {
     const BakePlan plan = PlanOf({kPlans + scene});
     EXPECT_TRUE(plan.empty()) << scene;
     // E, Eavg, Favg, dfg, sheen_E (issue 14), glass_E, glass_Eavg, f82,
-    // spec_E and spec_Eavg (issue 15), ltc_ggx (issue 28).
-    EXPECT_EQ(plan.omitted.size(), 11u) << scene;
+    // spec_E and spec_Eavg (issue 15), ltc_ggx and ltc_sheen (issue 28).
+    EXPECT_EQ(plan.omitted.size(), 12u) << scene;
     for (const char *name : {"glass_E", "f82", "spec_E", "spec_Eavg"})
       EXPECT_NE(Omitted(plan, name).find("unlit or has no specular lobe"), std::string::npos)
           << name;
@@ -498,8 +530,8 @@ TEST(Plan, JsonHasTheDocumentedShape) {
     EXPECT_FALSE(o["reason"].get<std::string>().empty());
   }
   // No F82 metal, no coat, no area lights.
-  EXPECT_EQ(omitted,
-            (std::vector<std::string>{"Favg", "dfg", "f82", "spec_E", "spec_Eavg", "ltc_ggx"}));
+  EXPECT_EQ(omitted, (std::vector<std::string>{"Favg", "dfg", "f82", "spec_E", "spec_Eavg",
+                                               "ltc_ggx", "ltc_sheen"}));
   // Transmission and volume are baked now (issue 15): anisotropy and
   // iridescence remain.
   ASSERT_EQ(j["unsupported"].size(), 2u);

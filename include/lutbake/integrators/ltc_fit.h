@@ -34,21 +34,41 @@
 #include "lutbake/integrators/half_vector_rule.h"
 #include "lutbake/models/ltc.h"
 #include "lutbake/models/ndf.h"
+#include "lutbake/models/oren_nayar.h"
 #include "lutbake/models/sheen.h"
 #include "lutbake/models/smith.h"
 
 namespace lutbake {
 
+// The quadrature a lobe is integrated with (the fit's objective, the errors,
+// the rectangles' references):
+//   kHalfVector      the half-vector rule (half_vector_rule.h) of width
+//                    quadratureAlpha: lobes that follow a half vector
+//                    (microfacet; sheen, broad, with its mass graded toward
+//                    the horizon of h);
+//   kLightDirection  the light-direction rule (light_direction_rule.h):
+//                    lobes smooth over the hemisphere (diffuse), panels cut
+//                    at theta_o and cos(phi) = 0.
+enum class LtcQuadrature { kHalfVector, kLightDirection };
+
 // The lobe: f(v, l) (n.l) at mu_o = v.z for a direction l (unit, any
-// hemisphere: it returns 0 for l.z <= 0), with the width the half-vector rule
-// resolves (alpha of a microfacet lobe; 1 for a broad one) and, optionally,
-// its exact magnitude int f (n.l) dl and fresnel int f (n.l) (1 - v.h)^5 dl
-// (otherwise the rule integrates them).
+// hemisphere: it returns 0 for l.z <= 0), with its quadrature (and the
+// width the half-vector rule resolves: alpha of a microfacet lobe; 1 for a
+// broad one) and, optionally, its exact magnitude int f (n.l) dl and fresnel
+// int f (n.l) (1 - v.h)^5 dl (otherwise the rule integrates them).
 struct LtcLobe {
   std::function<double(double mu_o, const Vec3 &l)> cosineWeighted;
   double quadratureAlpha = 1.0;
   std::function<void(double mu_o, double *magnitude, double *fresnel)> moments;
+  LtcQuadrature quadrature = LtcQuadrature::kHalfVector;
 };
+
+// The lobe's rule over the upper hemisphere (halfCircle: phi in [0, pi],
+// weights doubled) and over a polygon clipped at the horizon, at a level
+// (0: the fit, 1: errors, 2: the check of level 1).
+std::vector<LtcNode> LtcLobeRule(const LtcLobe &lobe, double mu_o, int level, bool halfCircle);
+std::vector<LtcNode> LtcLobePolygonRule(const LtcLobe &lobe, double mu_o, int level,
+                                        const Vec3 *vertices, int count);
 
 // The microfacet lobe f = D G2 / (4 mu_o mu_i) (F = 1) times mu_i, of the
 // given NDF and Smith G2; moments from the albedo quadrature (E = A + B and
@@ -67,9 +87,32 @@ inline constexpr double kLtcMinimumAlpha = 1e-5;  // ltc_code's MIN_ALPHA
 LtcLobe SheenLtcLobe(SheenVisibility visibility, double alpha);
 inline constexpr double kLtcMinimumSheenAlpha = 1e-3;
 
+// Burley's diffuse (Disney 2012; models/burley.h) times mu_i at perceptual
+// roughness r, base colour 1: the light-direction rule; no exact moments
+// here (table burley_E holds the closed-form magnitude).
+LtcLobe BurleyLtcLobe(double perceptualRoughness);
+// Oren-Nayar diffuse (models/oren_nayar.h) times mu_i at sigma (radians),
+// reflectance 1: the light-direction rule, whose panels are cut at its kinks
+// (theta_i = theta_o, cos(dphi) = 0).
+LtcLobe OrenNayarLtcLobe(OrenNayarVariant variant, double sigma);
+
 // int f (n.l) dl and int f (n.l) (1 - v.h)^5 dl by the rule.
 void IntegrateLobeMoments(const LtcLobe &lobe, double mu_o, int level, double *magnitude,
                           double *fresnel);
+
+// magnitude and fresnel of a lobe smooth over the hemisphere, by nested
+// adaptive Gauss-Kronrod (gauss_kronrod.h) over theta_l (split at theta_o)
+// and phi in [0, pi] (split at pi/2; doubled: the lobes are even in l.y),
+// the half vector from normalize(v + l): the diffuse LTC tables' reference
+// for check, independent of the light-direction rule's fixed panels. Bounds
+// 16 x the Gauss-Kronrod estimates of both levels plus 1e-13.
+struct LtcMomentsReference {
+  double magnitude = 0, fresnel = 0;
+  double magnitudeBound = 0, fresnelBound = 0;
+  uint64_t evaluations = 0;
+};
+LtcMomentsReference IntegrateLobeMomentsAdaptive(const LtcLobe &lobe, double mu_o,
+                                                 double tolerance);
 
 // A light: a planar rectangle facing the origin; vertices in winding order.
 struct LtcRectangle {

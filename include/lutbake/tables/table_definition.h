@@ -157,6 +157,9 @@ enum class PlanRole {
   // Rectangular area lights by linearly transformed cosines: the LTC fit of
   // each lobe a lit material uses (ltc_ggx), when a manifest asks for them.
   kAreaLights,
+  // The same for the sheen lobe (ltc_sheen), where a lit material has a
+  // sheen layer.
+  kSheenAreaLights,
 };
 
 // What a generated C++ header says about the table besides its axes.
@@ -294,6 +297,8 @@ class TableDefinition {
   // smoothly over a branch and jumps where neighbours lie on different
   // branches (ltc_ggx: theta*, log A, log rho, beta of ltc_fit.h): check
   // looks for a step between neighbours far larger than the steps beside it.
+  // Empty for a texel whose matrix does not matter (an LTC texel that
+  // carries no light): it takes part in no step.
   virtual std::vector<double> FitParameters(const double * /*channels*/) const { return {}; }
   // How many leading channels are the fit (ltc_ggx's four entries of M^-1),
   // not integrals: check judges them by the measures above, not against a
