@@ -8,9 +8,9 @@ namespace lutbake {
 const std::vector<TableFormat> &AllFormats() {
   static const std::vector<TableFormat> formats = [] {
     std::vector<TableFormat> all;
-    for (auto records :
-         {ExrFormats, BinaryFormats, CppHeaderFormats, PngFormats, Ktx2Formats, DdsFormats,
-          IncFormats, JsFormats, ShaderArrayFormats, CArrayFormats, ThreejsFormats})
+    for (auto records : {ExrFormats, BinaryFormats, CppHeaderFormats, PngFormats, Ktx2Formats,
+                         DdsFormats, IncFormats, JsFormats, ShaderArrayFormats, CArrayFormats,
+                         ThreejsFormats, BabylonLtcFormats})
       for (TableFormat &format : records()) all.push_back(std::move(format));
     return all;
   }();

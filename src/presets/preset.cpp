@@ -266,6 +266,13 @@ AxisRoles RolesOf(const PresetTexture &texture, const Needs &needs) {
   }
   const bool averaged = needs.average || needs.glassAverage || needs.specAverage;
   const bool dielectric = needs.glass || needs.glassAverage || needs.spec || needs.specAverage;
+  // Channels of geometry alone (the clipped sphere, constants) read the
+  // texture coordinates, not a lobe: any axes do (EEVEE's ltc_disk_integral).
+  bool geometryOnly = true;
+  for (const PresetChannel &c : texture.channels)
+    geometryOnly = geometryOnly &&
+                   (c.meaning == "clipped_sphere" || c.meaning == "one" || c.meaning == "zero");
+  if (geometryOnly && !dielectric) return roles;
   if (roles.roughness < 0 || (roles.mu < 0 && !averaged))
     throw std::invalid_argument(texture.file +
                                 ": a preset texture needs its mu and roughness axes");
@@ -301,7 +308,7 @@ void TexelChannels(const PresetTexture &texture, const Needs &needs, const AxisR
   sheenSettings.sheenVisibility = model.sheenVisibility;
   sheenSettings.sheenAlpha =
       model.sheenAlpha == PresetAlpha::kSquared ? SheenAlpha::kSquared : SheenAlpha::kLinear;
-  const double roughness = quantity(roles.roughness);
+  const double roughness = roles.roughness >= 0 ? quantity(roles.roughness) : 0.0;
   const double mu = roles.mu >= 0 ? quantity(roles.mu) : 0.0;
   double eta = 1.0;
   if (roles.eta >= 0) {

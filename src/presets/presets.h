@@ -17,8 +17,10 @@ const Preset &ThreejsLtcPreset();
 const Preset &GltfSampleRendererPreset();
 const Preset &LearnOpenGlPreset();
 const Preset &EeveePreset();
+const Preset &EeveeLtcPreset();
 const Preset &CyclesPreset();
 const Preset &BabylonPreset();
+const Preset &BabylonLtcPreset();
 const Preset &OsprayPreset();
 const Preset &MaterialxPreset();
 

@@ -19,8 +19,10 @@ const std::vector<const Preset *> &AllPresets() {
       &GltfSampleRendererPreset(),
       &LearnOpenGlPreset(),
       &EeveePreset(),
+      &EeveeLtcPreset(),
       &CyclesPreset(),
       &BabylonPreset(),
+      &BabylonLtcPreset(),
       &OsprayPreset(),
       &MaterialxPreset(),
   };

@@ -199,4 +199,11 @@ TEST(Determinism, EnginePresets) {
   }
 }
 
+// A preset of LTC channels (fitted over its whole grid at once) and a
+// geometry-only texture: EEVEE's three arrays and preset.json (the 64^2
+// fit, about 7 s on 2 threads, 14 s on one).
+TEST(Determinism, EeveeLtcPreset) {
+  EXPECT_EQ(ExpectSameFilesForEveryThreadCount("preset_eevee_ltc", "--preset eevee-ltc"), 4);
+}
+
 }  // namespace
