@@ -22,5 +22,6 @@ std::vector<TableFormat> JsFormats();           // js_table.cpp
 std::vector<TableFormat> ShaderArrayFormats();  // shader_array_table.cpp
 std::vector<TableFormat> CArrayFormats();       // c_array_writer.cpp
 std::vector<TableFormat> ThreejsFormats();      // threejs_module.cpp
+std::vector<TableFormat> FitFormats();          // fit_format.cpp
 
 }  // namespace lutbake
