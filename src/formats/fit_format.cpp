@@ -219,7 +219,7 @@ std::string FitShaderSource(ShaderLanguage language, const std::string &name,
   };
   const std::string bx = fn + "_breaks_x", by = fn + "_breaks_y", cs = fn + "_coefficients";
   array(bx, f.breaksX);
-  array(by, f.breaksY);
+  if (f.dims == 2) array(by, f.breaksY);
   array(cs, f.coefficients);
   const auto clamp = [&](const std::string &v, double lo, double hi) {
     return "clamp(" + v + ", " + d.Lit(lo) + ", " + d.Lit(hi) + ")";
@@ -231,15 +231,16 @@ std::string FitShaderSource(ShaderLanguage language, const std::string &name,
                                 d.Lit(LogXLo(f)) + ") * " + d.Lit(XScale(f))
                           : "(" + params[0] + " - " + d.Lit(f.xLo) + ") * " + d.Lit(XScale(f)),
                       0, 1));
-  body +=
-      f.dims == 2
-          ? d.Let(F, "b",
-                  clamp("(" + params[1] + " - " + d.Lit(f.yLo) + ") * " + d.Lit(YScale(f)), 0, 1))
-          : d.Let(F, "b", d.Lit(0.0));
+  // A 1D table has no y: b, sy0 and sy are left out (unused locals warn).
+  const bool twoD = f.dims == 2;
+  if (twoD)
+    body += d.Let(F, "b",
+                  clamp("(" + params[1] + " - " + d.Lit(f.yLo) + ") * " + d.Lit(YScale(f)), 0, 1));
+  const std::string sy0 = twoD ? d.Let(F, "sy0", "b") : "";
   switch (f.map) {
     case FitMap::kLinear:
-    case FitMap::kLogX: body += d.Let(F, "sx0", "a") + d.Let(F, "sy0", "b"); break;
-    case FitMap::kSqrtX: body += d.Let(F, "sx0", "sqrt(a)") + d.Let(F, "sy0", "b"); break;
+    case FitMap::kLogX: body += d.Let(F, "sx0", "a") + sy0; break;
+    case FitMap::kSqrtX: body += d.Let(F, "sx0", "sqrt(a)") + sy0; break;
     case FitMap::kCorner:
       body += d.Let(F, "q", "sqrt(a)") + d.Let(F, "sum", "q + b") +
               d.Let(F, "sx0", d.Select("sum > " + d.Lit(0.0), "q / sum", d.Lit(0.0))) +
@@ -247,7 +248,7 @@ std::string FitShaderSource(ShaderLanguage language, const std::string &name,
       break;
   }
   body += d.Let(F, "sx", clamp("sx0", f.breaksX.front(), f.breaksX.back()));
-  body += d.Let(F, "sy", clamp("sy0", f.breaksY.front(), f.breaksY.back()));
+  if (twoD) body += d.Let(F, "sy", clamp("sy0", f.breaksY.front(), f.breaksY.back()));
   const auto locate = [&](const std::string &axis, const std::string &arr,
                           const std::vector<double> &breaks) {
     std::string k = "0";
