@@ -255,6 +255,7 @@ WriteOptions WriteOptionsOf(const BakeRequest &r) {
       r.headerType.value_or("float") == "half" ? HeaderStorage::kHalf : HeaderStorage::kFloat;
   options.binaryValues =
       r.binType.value_or("float") == "double" ? ValueType::kFloat64 : ValueType::kFloat32;
+  options.fitTolerance = r.fitTolerance.value_or(options.fitTolerance);
   return options;
 }
 

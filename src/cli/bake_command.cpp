@@ -64,6 +64,12 @@ void AddFileOptions(CLI::App &app, BakeOptions &o) {
                  "--tolerance under 1e-7)")
       ->capture_default_str()
       ->check(OneOf({"float", "double"}));
+  app.add_option("--fit-tolerance", o.fitTolerance,
+                 "--format fit: the certified bound (256 coefficients per channel at 4.9e-4 and "
+                 "above, 4096 below)")
+      ->type_name("EPS")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
 }
 
 }  // namespace
@@ -145,6 +151,7 @@ BakeRequest RequestOf(const BakeOptions &o, CLI::App &app) {
   if (given("--namespace")) r.headerNamespace = o.headerNamespace;
   if (given("--header-type")) r.headerType = o.headerType;
   if (given("--bin-type")) r.binType = o.binType;
+  if (given("--fit-tolerance")) r.fitTolerance = o.fitTolerance;
   if (!o.shaders.empty()) r.shaders = SplitList(o.shaders);
   r.scenes = o.scene.scenes;
   r.manifests = o.scene.manifests;

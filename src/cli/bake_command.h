@@ -29,6 +29,7 @@ struct BakeOptions {
   std::string headerNamespace = "lutbake_luts";
   std::string headerType = "float";
   std::string binType = "float";
+  double fitTolerance = 4.9e-4;
   std::string shaders;  // --shader glsl,hlsl,wgsl,msl: lutbake.<ext> beside the tables
   bool json = false, quiet = false, verbose = false;
   SceneOptions scene;  // --scene / --manifest: bake a plan

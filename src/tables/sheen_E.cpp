@@ -60,6 +60,11 @@ class SheenAlbedo final : public SheenTable {
     return {mu, RoughnessCoordinate()};
   }
   int PlannedRoughnessAxis() const override { return 1; }
+  // A fit stops short of mu = 0, where the Charlie albedo grows as 1 / mu,
+  // and of r = 0, where the lobe's grazing peak narrows without end.
+  std::array<double, 4> FitDomain(const BakeSettings &) const override {
+    return {1e-4, 1.0, 0.01, 1.0};
+  }
 
   PointValue Evaluate(const BakeSettings &s, double mu, double r) const override {
     const double alpha = AlphaOf(s, r);

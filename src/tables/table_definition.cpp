@@ -12,6 +12,16 @@ std::vector<std::string> TableDefinition::CoordinateOptions() const {
   return options;
 }
 
+std::array<double, 4> TableDefinition::FitDomain(const BakeSettings &settings) const {
+  std::array<double, 4> domain = {0.0, 1.0, 0.0, 1.0};
+  const std::vector<PointCoordinate> coordinates = Coordinates(settings);
+  for (size_t i = 0; i < coordinates.size() && i < 2; ++i) {
+    domain[2 * i] = coordinates[i].zeroAllowed ? 0.0 : coordinates[i].min;
+    domain[2 * i + 1] = coordinates[i].max;
+  }
+  return domain;
+}
+
 uint64_t TableDefinition::SamplesPerTexel(const BakeSettings &s) const {
   return !Sampled() || IsQuadrature(s.estimator) ? 0 : s.samples;
 }

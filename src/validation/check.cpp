@@ -21,6 +21,7 @@
 #include "lutbake/formats/writer.h"
 #include "lutbake/integrators/fresnel_average.h"
 #include "lutbake/tables/lookup.h"
+#include "lutbake/validation/fit_check.h"
 
 namespace lutbake {
 
@@ -1652,13 +1653,28 @@ CheckReport CheckBakedSet(const std::string &dir, const CheckOptions &options) {
       "^(" + alternatives +
       R"()(_[A-Za-z0-9_]+)?(\.err)?\.(exr|bin|h|png|ktx2|dds|inc|js|ts|glsl|hlsl|wgsl|metal)$)");
   std::set<std::string> suffixes;
+  std::set<std::string> fits;  // T_fit.h of --format fit (fit_check.h)
   for (const auto &entry : fs::directory_iterator(dir, ec)) {
     std::smatch m;
     const std::string file = entry.path().filename().string();
+    if (file.size() > 6 && file.compare(file.size() - 6, 6, "_fit.h") == 0) {
+      fits.insert(entry.path().string());
+      continue;
+    }
+    if (file.find("_fit.") != std::string::npos) continue;  // a fit's shader functions
     if (std::regex_match(file, m, kTableFile)) suffixes.insert(m[2].str());
   }
-  if (suffixes.empty()) suffixes.insert("");
+  if (suffixes.empty() && fits.empty()) suffixes.insert("");
   CheckReport report;
+  for (const std::string &path : fits) {
+    const auto start = std::chrono::steady_clock::now();
+    report.dir = dir;
+    report.files.push_back(path);
+    for (CheckResult &r : CheckFitFile(path, options, &report.referenceEvaluations))
+      report.results.push_back(std::move(r));
+    report.seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
   for (const std::string &suffix : suffixes) {
     const CheckReport part = Checker(dir, options, suffix).Run();
     report.dir = part.dir;

@@ -26,6 +26,7 @@
 #include <random>
 #include <sstream>
 
+#include "lutbake/formats/fit_format.h"
 #include "lutbake/formats/source_formats.h"
 #include "lutbake/tables/lookup.h"
 #include "support/cli_run.h"
@@ -82,10 +83,27 @@ const std::vector<Table> &Tables() {
   return tables;
 }
 
-// The emitted code of one language: the arrays of every table, then
-// lutbake.<ext>.
+// The fits lutbake emits (tests/data/fits, --format fit) of a 2D table with
+// the corner map and two channels, and of a 1D table.
+const std::vector<FitSource> &Fits() {
+  static const std::vector<FitSource> fits = [] {
+    std::vector<FitSource> f;
+    for (const char *name : {"dfg", "Eavg", "f82"})
+      f.push_back(ReadFitSource(std::string(LUTBAKE_TEST_DATA) + "/fits/" + name + "_fit.h"));
+    return f;
+  }();
+  return fits;
+}
+
+// The emitted code of one language: the arrays of every table, the fits'
+// functions (--format fit-<language>), then lutbake.<ext>.
 std::string EmittedCode(ShaderLanguage language, const fs::path &dir) {
   std::string code;
+  for (const FitSource &f : Fits())
+    code += FitShaderSource(language, f.name,
+                            f.fit.dims == 2 ? std::vector<std::string>{"mu", "roughness"}
+                                            : std::vector<std::string>{"roughness"},
+                            f.fit, {}, {});
   for (const Table &t : Tables()) {
     if (t.channels > 4) continue;  // no array format holds six channels
     const fs::path path = dir / (t.Name() + ShaderExtension(language));
@@ -187,6 +205,10 @@ std::string Calls(ShaderLanguage language) {
           lit("0.5") + ")",
       1);
   add("lutbake_sheen_albedo_scaling(" + f0 + ", " + lit("0.3") + ")", 1);
+  for (const FitSource &f : Fits())
+    add("lutbake_fit_" + f.name + "(" + lit("0.37") + (f.fit.dims == 2 ? ", " + lit("0.37") : "") +
+            ")",
+        f.fit.channels);
   add("lutbake_sheen_albedo_scaling2(" + f0 + ", " + lit("0.3") + ", " + lit("0.4") + ")", 1);
   // The area-light functions of ltc_ggx.
   const std::string N = vec(3, lit("0.0") + ", " + lit("0.0") + ", " + lit("1.0")),
@@ -478,6 +500,22 @@ TEST(ShaderCode, MetalCompilesAsCppAndLooksUpAsTheLibrary) {
     }
     ++index;
   }
+  // The fits' functions at random points, against the library's float32
+  // evaluation (clang may fuse multiply-adds: 1e-5 allowed, above the
+  // fits' a-priori rounding bounds for such a change).
+  std::vector<std::pair<size_t, std::pair<double, double>>> fitPoints;
+  for (size_t k = 0; k < Fits().size(); ++k)
+    for (int i = 0; i < 64; ++i) {
+      const double x = static_cast<float>(std::uniform_real_distribution<double>(0, 1)(random));
+      const double y = static_cast<float>(std::uniform_real_distribution<double>(0, 1)(random));
+      const FitSource &f = Fits()[k];
+      const std::string call = "lutbake_fit_" + f.name + "(" + FloatText(x) + "f" +
+                               (f.fit.dims == 2 ? ", " + FloatText(y) + "f" : "") + ")";
+      for (int c = 0; c < f.fit.channels; ++c)
+        main << "  std::printf(\"%.9g\\n\", static_cast<double>(" << call
+             << (f.fit.channels > 1 ? std::string(".") + "xy"[c] : std::string()) << "));\n";
+      fitPoints.push_back({k, {x, y}});
+    }
   main << Calls(ShaderLanguage::kMsl)
        << "  std::printf(\"acc %g\\n\", static_cast<double>(acc));\n}\n";
   std::ofstream(dir / "main.cpp") << main.str();
@@ -505,6 +543,18 @@ TEST(ShaderCode, MetalCompilesAsCppAndLooksUpAsTheLibrary) {
                                      << q[1] << ", " << q[2] << ", " << q[3] << ") channel " << c;
       }
   }
+  double worstFit = 0.0;
+  for (const auto &[k, p] : fitPoints) {
+    const FitSource &f = Fits()[k];
+    for (int c = 0; c < f.fit.channels; ++c) {
+      double got = 0.0;
+      ASSERT_TRUE(lines >> got);
+      const double want = f.fit.EvaluateFloat(c, p.first, p.second);
+      worstFit = std::max(worstFit, std::abs(got - want));
+      ASSERT_NEAR(got, want, 1e-5) << f.name << " fit at (" << p.first << ", " << p.second << ")";
+    }
+  }
+  std::printf("MSL fits: %zu points, worst |shader - library| %.3g\n", fitPoints.size(), worstFit);
   std::string acc;
   lines >> acc;
   EXPECT_EQ(acc, "acc");

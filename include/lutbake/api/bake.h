@@ -86,6 +86,8 @@ struct BakeRequest {
   std::optional<std::string> headerNamespace;
   std::optional<std::string> headerType;
   std::optional<std::string> binType;
+  // --format fit: the certified bound of the fits (unset: 4.9e-4).
+  std::optional<double> fitTolerance;
   // Shader functions beside the tables: "glsl", "hlsl", "wgsl", "msl".
   std::vector<std::string> shaders;
 

@@ -27,6 +27,9 @@ struct WriteOptions {
   // .bin values and error bounds: float32, or float64 for tables whose
   // integration bound is below what float32 can hold (--tolerance 1e-9).
   ValueType binaryValues = ValueType::kFloat32;
+  // --format fit: the certified bound to reach (tables/table_fit.h: 4.9e-4,
+  // half a binary16 ulp at 1, within 256 coefficients per channel).
+  double fitTolerance = 4.9e-4;
 };
 
 // A value as half storage holds it: rounded to binary16 (nearest even) and

@@ -24,6 +24,7 @@
 // the integrators below), add it to the registry, and test it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -312,6 +313,14 @@ class TableDefinition {
   virtual PointValue EvaluateIntegrals(const BakeSettings &settings, double x, double y) const {
     return Evaluate(settings, x, y);
   }
+
+  // ---- fitted closed forms (--format fit) --------------------------------
+  // The domain {xLo, xHi, yLo, yHi} of a fitted closed form of the table, in
+  // its point coordinates (a 1D table: y ignored); the default: each
+  // coordinate's accepted range (0 where 0 is accepted). A table whose
+  // value is unbounded at an edge narrows it (sheen_E's Charlie albedo
+  // grows as 1 / mu).
+  virtual std::array<double, 4> FitDomain(const BakeSettings &settings) const;
 
   // ---- claims ---------------------------------------------------------
   virtual ValueClaim Range(const BakeSettings &) const { return {0.0, 1.0, false, "in [0, 1]"}; }
