@@ -292,7 +292,6 @@ struct NodeBatch {
     double *at = v.data() + n, *rj = ruleJac.data() + n;
     const double len = p.b - p.a;
     if (p.square == 2 || p.square == -2) {
-      for (size_t j = 0; j < m; ++j) at[j] = rule.x[j];
       for (size_t j = 0; j < m; ++j) rj[j] = rule.w[j] * MapNode(p, rule.x[j], &at[j]);
     } else if (p.square > 0) {
       for (size_t j = 0; j < m; ++j) {
