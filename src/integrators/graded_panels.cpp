@@ -36,19 +36,24 @@ void GradeToward(double a, double b, double delta, bool towardA, std::vector<Pan
 // about 0).
 void BuildPanels(const std::vector<Point> &points, double maxLength, double nearSingular,
                  std::vector<Panel> *out) {
+  thread_local std::vector<Panel> graded;
   for (size_t k = 0; k + 1 < points.size(); ++k) {
     const Point &p = points[k], &q = points[k + 1];
     if (!(q.v > p.v)) continue;
-    thread_local std::vector<Panel> graded;
     graded.clear();
     const bool gp = p.above > 0.0 && p.above < q.v - p.v;
     const bool gq = q.below > 0.0 && q.below < q.v - p.v;
+    // GradeToward lays the panels toward a from b, in descending order:
+    // reversed here, so that `graded`, and the pieces below, come in
+    // ascending order without a sort (the same panels as sorting them).
     if (gp && gq) {
       const double mid = 0.5 * (p.v + q.v);
       GradeToward(p.v, mid, p.above, true, &graded, p.keep);
+      std::reverse(graded.begin(), graded.end());
       GradeToward(mid, q.v, q.below, false, &graded, q.keep);
     } else if (gp) {
       GradeToward(p.v, q.v, p.above, true, &graded, p.keep);
+      std::reverse(graded.begin(), graded.end());
     } else if (gq) {
       GradeToward(p.v, q.v, q.below, false, &graded, q.keep);
     } else if (p.sqAbove && q.sqBelow) {
@@ -79,8 +84,6 @@ void BuildPanels(const std::vector<Point> &points, double maxLength, double near
       }
       out->push_back({cur, g.b});
     }
-    std::sort(out->begin() + start, out->end(),
-              [](const Panel &x, const Panel &y) { return x.a < y.a; });
     if (p.sqAbove) (*out)[start].square = 1;
     if (q.sqBelow) out->back().square = -1;
   }
