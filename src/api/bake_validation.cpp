@@ -134,6 +134,16 @@ void ValidateApplicability(const BakeRequest &r) {
   }
   if (r.headerType) RequireFormat(r, "header-type", "header");
   if (r.binType) RequireFormat(r, "bin-type", "bin");
+  const std::vector<std::string> formats = r.formats.value_or(DefaultFormats());
+  const auto fitted = std::find_if(formats.begin(), formats.end(), [](const std::string &name) {
+    const TableFormat *f = FindFormat(name);
+    return f && f->fittedForm;
+  });
+  if (r.fitTolerance && fitted == formats.end())
+    throw UsageError(
+        "--fit-tolerance applies to the fit formats (fit, fit-glsl, fit-hlsl, "
+        "fit-wgsl, fit-msl); --format " +
+        JoinList(formats) + " writes none");
   // With a plan the plan picks the tables (and refuses the model options).
   if (!r.scenes.empty() || !r.manifests.empty()) return;
   const std::vector<std::string> names =
@@ -160,6 +170,16 @@ void ValidateApplicability(const BakeRequest &r) {
                                                     {"seed", s.seed.has_value()}};
   for (const auto &[option, given] : sampling)
     if (given) RequireTableUsing(asked, asText, option, "", IsSampled);
+  // A fitted closed form is made of a 1D or 2D integrated table only.
+  if (fitted != formats.end())
+    for (const TableDefinition *table : asked) {
+      const size_t dims = table->Coordinates(BakeSettings{}).size();
+      if (dims > 2 || table->FittedChannels() > 0)
+        throw UsageError("--format " + *fitted + " fits a closed form to a 1D or 2D integrated " +
+                         "table; " + table->Name() + " is " +
+                         (dims > 2 ? std::to_string(dims) + "D" : "itself a fit") +
+                         ": use exr, bin or header for it");
+    }
   // A table of more than two channels (ltc_ggx) goes only into the formats
   // that hold them; its shader lookups read it as textures of four channels
   // each (shader_code.cpp).

@@ -436,6 +436,7 @@ std::vector<TableFormat> FitFormats() {
     format.extension = format.makeWriter()->extension();
     format.storage = FixedStorage(ValueType::kFloat32);
     format.maxChannels = kMaxFitChannels;
+    format.fittedForm = true;
     formats.push_back(std::move(format));
   }
   return formats;

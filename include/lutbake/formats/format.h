@@ -41,6 +41,9 @@ struct TableFormat {
   // The most channels a table in it may have (exr, bin, header: any table's,
   // kMaxTableChannels; the image textures and the shader arrays: two).
   int maxChannels = 2;
+  // A closed form fitted to the table (the fit formats), not its texels:
+  // for 1D and 2D integrated tables only.
+  bool fittedForm = false;
 };
 
 // Every format, in the order `bake --format` lists them.
