@@ -46,12 +46,10 @@ std::string Short(double v) {
 }
 
 // The float32 constants of the map, as EvaluateFloat uses them.
-float XScale(const PiecewiseChebyshev &f) {
-  return static_cast<float>(f.map == FitMap::kLogX ? 1.0 / (std::log(f.xHi) - std::log(f.xLo))
-                                                   : 1.0 / (f.xHi - f.xLo));
-}
-float LogXLo(const PiecewiseChebyshev &f) { return static_cast<float>(std::log(f.xLo)); }
-float YScale(const PiecewiseChebyshev &f) { return static_cast<float>(1.0 / (f.yHi - f.yLo)); }
+float XScale(const PiecewiseChebyshev &f) { return FitMapConstantsOf(f).xScale; }
+float LogXLo(const PiecewiseChebyshev &f) { return FitMapConstantsOf(f).xOrigin; }
+float YScale(const PiecewiseChebyshev &f) { return FitMapConstantsOf(f).yScale; }
+float LogYLo(const PiecewiseChebyshev &f) { return FitMapConstantsOf(f).yOrigin; }
 
 // The comment every file carries: what the fit is, its domain and bound.
 std::string FitComment(const std::string &name, const std::vector<std::string> &params,
@@ -104,8 +102,11 @@ std::string FitCppSource(const std::string &name, const std::vector<std::string>
   out << "constexpr float kXLo = " << FloatLiteral(f.xLo, "f")
       << ", kXHi = " << FloatLiteral(f.xHi, "f") << ", kYLo = " << FloatLiteral(f.yLo, "f")
       << ", kYHi = " << FloatLiteral(f.yHi, "f") << ";\n";
-  if (f.map == FitMap::kLogX)
+  if (f.map == FitMap::kLogX || f.map == FitMap::kLogXY)
     out << "constexpr float kLogXLo = " << FloatLiteral(LogXLo(f), "f") << ";\n";
+  if (f.map == FitMap::kLogXY)
+    out << "constexpr float kXShift = " << FloatLiteral(f.xShift, "f")
+        << ", kLogYLo = " << FloatLiteral(LogYLo(f), "f") << ";\n";
   out << "constexpr float kXScale = " << FloatLiteral(XScale(f), "f")
       << ", kYScale = " << FloatLiteral(YScale(f), "f") << ";\n";
   const auto array = [&](const char *n, const std::vector<double> &v) {
@@ -148,17 +149,25 @@ std::string FitCppSource(const std::string &name, const std::vector<std::string>
   if (f.map == FitMap::kLogX)
     out << "  float a = (std::log(std::max(static_cast<float>(" << params[0]
         << "), kXLo)) - kLogXLo) * kXScale;\n";
+  else if (f.map == FitMap::kLogXY)
+    out << "  float a = (std::log(std::max(static_cast<float>(" << params[0]
+        << "), kXLo) + kXShift) - kLogXLo) * kXScale;\n";
   else
     out << "  float a = (static_cast<float>(" << params[0] << ") - kXLo) * kXScale;\n";
   out << "  a = std::min(std::max(a, 0.0f), 1.0f);\n";
-  if (f.dims == 2)
+  if (f.dims == 2 && f.map == FitMap::kLogXY)
+    out << "  float b = (std::log(std::max(static_cast<float>(" << params[1]
+        << "), kYLo)) - kLogYLo) * kYScale;\n"
+        << "  b = std::min(std::max(b, 0.0f), 1.0f);\n";
+  else if (f.dims == 2)
     out << "  float b = (static_cast<float>(" << params[1] << ") - kYLo) * kYScale;\n"
         << "  b = std::min(std::max(b, 0.0f), 1.0f);\n";
   else
     out << "  const float b = 0.0f;\n";
   switch (f.map) {
     case FitMap::kLinear:
-    case FitMap::kLogX: out << "  float sx = a, sy = b;\n"; break;
+    case FitMap::kLogX:
+    case FitMap::kLogXY: out << "  float sx = a, sy = b;\n"; break;
     case FitMap::kSqrtX: out << "  float sx = std::sqrt(a), sy = b;\n"; break;
     case FitMap::kCorner:
       out << "  const float q = std::sqrt(a), sum = q + b;\n"
@@ -225,21 +234,28 @@ std::string FitShaderSource(ShaderLanguage language, const std::string &name,
     return "clamp(" + v + ", " + d.Lit(lo) + ", " + d.Lit(hi) + ")";
   };
   std::string body;
+  const std::string shift = f.map == FitMap::kLogXY ? " + " + d.Lit(f.xShift) : std::string();
   body += d.Let(F, "a",
-                clamp(f.map == FitMap::kLogX
-                          ? "(log(max(" + params[0] + ", " + d.Lit(f.xLo) + ")) - " +
+                clamp(f.map == FitMap::kLogX || f.map == FitMap::kLogXY
+                          ? "(log(max(" + params[0] + ", " + d.Lit(f.xLo) + ")" + shift + ") - " +
                                 d.Lit(LogXLo(f)) + ") * " + d.Lit(XScale(f))
                           : "(" + params[0] + " - " + d.Lit(f.xLo) + ") * " + d.Lit(XScale(f)),
                       0, 1));
   // A 1D table has no y: b, sy0 and sy are left out (unused locals warn).
   const bool twoD = f.dims == 2;
-  if (twoD)
+  if (twoD && f.map == FitMap::kLogXY)
+    body += d.Let(F, "b",
+                  clamp("(log(max(" + params[1] + ", " + d.Lit(f.yLo) + ")) - " + d.Lit(LogYLo(f)) +
+                            ") * " + d.Lit(YScale(f)),
+                        0, 1));
+  else if (twoD)
     body += d.Let(F, "b",
                   clamp("(" + params[1] + " - " + d.Lit(f.yLo) + ") * " + d.Lit(YScale(f)), 0, 1));
   const std::string sy0 = twoD ? d.Let(F, "sy0", "b") : "";
   switch (f.map) {
     case FitMap::kLinear:
-    case FitMap::kLogX: body += d.Let(F, "sx0", "a") + sy0; break;
+    case FitMap::kLogX:
+    case FitMap::kLogXY: body += d.Let(F, "sx0", "a") + sy0; break;
     case FitMap::kSqrtX: body += d.Let(F, "sx0", "sqrt(a)") + sy0; break;
     case FitMap::kCorner:
       body += d.Let(F, "q", "sqrt(a)") + d.Let(F, "sum", "q + b") +
@@ -405,6 +421,7 @@ FitSource ReadFitSource(const std::string &path) {
   f.xHi = static_cast<float>(NumberAfter(text, "kXHi = ", path));
   f.yLo = static_cast<float>(NumberAfter(text, "kYLo = ", path));
   f.yHi = static_cast<float>(NumberAfter(text, "kYHi = ", path));
+  if (f.map == FitMap::kLogXY) f.xShift = static_cast<float>(NumberAfter(text, "kXShift = ", path));
   f.dims = text.find("const int ky = Patch(") != std::string::npos ? 2 : 1;
   f.breaksX = ArrayNamed(text, "kBreaksX", path);
   f.breaksY = ArrayNamed(text, "kBreaksY", path);
@@ -419,6 +436,9 @@ FitSource ReadFitSource(const std::string &path) {
       f.coefficients.size() != static_cast<size_t>(f.channels * px * py * f.nx * f.ny) ||
       !(f.xHi > f.xLo) || (f.dims == 2 && !(f.yHi > f.yLo)))
     throw IoError(path + ": the fit's sizes do not agree (channels, patches, coefficients)");
+  if ((f.map == FitMap::kLogX && !(f.xLo > 0.0)) ||
+      (f.map == FitMap::kLogXY && !(f.xLo + f.xShift > 0.0 && f.yLo > 0.0)))
+    throw IoError(path + ": a logarithmic map needs a domain above 0");
   for (size_t i = 1; i < f.breaksX.size(); ++i)
     if (!(f.breaksX[i] > f.breaksX[i - 1])) throw IoError(path + ": breaks not increasing");
   for (size_t i = 1; i < f.breaksY.size(); ++i)

@@ -54,27 +54,28 @@ void Locate(const std::vector<double> &breaks, T s, int *patch, T *z) {
   *z = t;
 }
 
-// The map of chebyshev_fit.h in T; lo, scale and the breaks are float32
-// values, so the double and float paths compute the same formula.
+// The map of chebyshev_fit.h in T; its constants (FitMapConstantsOf) and
+// the breaks are float32 values, so the double and float paths compute the
+// same formula.
 template <typename T>
 void MapIn(const PiecewiseChebyshev &f, T x, T y, T *sx, T *sy) {
   const T zero = 0, one = 1;
+  const FitMapConstants k = FitMapConstantsOf(f);
   *sx = zero;
   *sy = zero;
-  T a = f.map == FitMap::kLogX
-            ? (std::log(std::max(x, static_cast<T>(f.xLo))) -
-               static_cast<T>(ToFloat(std::log(f.xLo)))) *
-                  static_cast<T>(ToFloat(1.0 / (std::log(f.xHi) - std::log(f.xLo))))
-            : (x - static_cast<T>(f.xLo)) * static_cast<T>(ToFloat(1.0 / (f.xHi - f.xLo)));
+  const T X = k.logX ? std::log(std::max(x, static_cast<T>(f.xLo)) + static_cast<T>(f.xShift)) : x;
+  T a = (X - static_cast<T>(k.xOrigin)) * static_cast<T>(k.xScale);
   a = std::min(std::max(a, zero), one);
   T b = zero;
   if (f.dims == 2) {
-    b = (y - static_cast<T>(f.yLo)) * static_cast<T>(ToFloat(1.0 / (f.yHi - f.yLo)));
+    const T Y = k.logY ? std::log(std::max(y, static_cast<T>(f.yLo))) : y;
+    b = (Y - static_cast<T>(k.yOrigin)) * static_cast<T>(k.yScale);
     b = std::min(std::max(b, zero), one);
   }
   switch (f.map) {
     case FitMap::kLinear:
-    case FitMap::kLogX: *sx = a, *sy = b; break;
+    case FitMap::kLogX:
+    case FitMap::kLogXY: *sx = a, *sy = b; break;
     case FitMap::kSqrtX: *sx = std::sqrt(a), *sy = b; break;
     case FitMap::kCorner: {
       const T q = std::sqrt(a), sum = q + b;
@@ -248,6 +249,7 @@ PiecewiseChebyshev Build(const FitRequest &r, const Shape &s) {
   f.map = s.map;
   f.xLo = ToFloat(r.xLo), f.xHi = ToFloat(r.xHi);
   f.yLo = ToFloat(r.yLo), f.yHi = ToFloat(r.yHi);
+  if (s.map == FitMap::kLogXY) f.xShift = ToFloat(r.xShift);
   f.breaksX = s.map == FitMap::kCorner ? CornerBreaks(s.px) : Breaks(s.px, 0.0, s.gradeX);
   f.breaksY = r.dims == 1
                   ? std::vector<double>{0.0, 1.0}
@@ -265,17 +267,32 @@ const char *ToString(FitMap map) {
     case FitMap::kSqrtX: return "sqrt-x";
     case FitMap::kCorner: return "corner";
     case FitMap::kLogX: return "log-x";
+    case FitMap::kLogXY: return "log-xy";
   }
   return "?";
 }
 
 bool ParseFitMap(const std::string &text, FitMap *map) {
-  for (FitMap m : {FitMap::kLinear, FitMap::kSqrtX, FitMap::kCorner, FitMap::kLogX})
+  for (FitMap m : {FitMap::kLinear, FitMap::kSqrtX, FitMap::kCorner, FitMap::kLogX, FitMap::kLogXY})
     if (text == ToString(m)) {
       *map = m;
       return true;
     }
   return false;
+}
+
+FitMapConstants FitMapConstantsOf(const PiecewiseChebyshev &f) {
+  FitMapConstants k;
+  k.logX = f.map == FitMap::kLogX || f.map == FitMap::kLogXY;
+  k.logY = f.map == FitMap::kLogXY;
+  const double x0 = f.xLo + f.xShift, x1 = f.xHi + f.xShift;
+  k.xOrigin = static_cast<float>(k.logX ? std::log(x0) : f.xLo);
+  k.xScale =
+      static_cast<float>(k.logX ? 1.0 / (std::log(x1) - std::log(x0)) : 1.0 / (f.xHi - f.xLo));
+  k.yOrigin = static_cast<float>(k.logY ? std::log(f.yLo) : f.yLo);
+  k.yScale = static_cast<float>(k.logY ? 1.0 / (std::log(f.yHi) - std::log(f.yLo))
+                                       : 1.0 / (f.yHi - f.yLo));
+  return k;
 }
 
 void PiecewiseChebyshev::Map(double x, double y, double *sx, double *sy) const {
@@ -298,10 +315,14 @@ void PiecewiseChebyshev::Unmap(double sx, double sy, double *x, double *y) const
   }
   a = std::min(std::max(a, 0.0), 1.0);
   b = std::min(std::max(b, 0.0), 1.0);
-  *x = std::min(
-      std::max(map == FitMap::kLogX ? xLo * std::pow(xHi / xLo, a) : xLo + a * (xHi - xLo), xLo),
-      xHi);
-  *y = dims == 2 ? std::min(std::max(yLo + b * (yHi - yLo), yLo), yHi) : 0.0;
+  double X = xLo + a * (xHi - xLo), Y = yLo + b * (yHi - yLo);
+  if (map == FitMap::kLogX) X = xLo * std::pow(xHi / xLo, a);
+  if (map == FitMap::kLogXY) {
+    X = (xLo + xShift) * std::pow((xHi + xShift) / (xLo + xShift), a) - xShift;
+    Y = yLo * std::pow(yHi / yLo, b);
+  }
+  *x = std::min(std::max(X, xLo), xHi);
+  *y = dims == 2 ? std::min(std::max(Y, yLo), yHi) : 0.0;
 }
 
 double PiecewiseChebyshev::Evaluate(int channel, double x, double y) const {
@@ -316,12 +337,24 @@ double FitRoundingBound(const PiecewiseChebyshev &f, int channel, int kx, int ky
   const double *c = f.Patch(channel, kx, ky);
   const bool sqrtX = f.map == FitMap::kSqrtX || f.map == FitMap::kCorner;
   double dsx = MapRounding(f.xLo, f.xHi, sqrtX);
-  const double dsy = MapRounding(f.yLo, f.yHi, false);
   // log: 4 ulp of |log x| (a shader's log is not correctly rounded) and an
   // absolute 2^-21 (GLSL's log near 1), over the span of the logs.
+  double dsy = MapRounding(f.yLo, f.yHi, false);
   if (f.map == FitMap::kLogX)
     dsx = 8.0 * kUnit +
           (0x1p-21 + 4.0 * kUnit * std::abs(std::log(f.xLo))) / (std::log(f.xHi) - std::log(f.xLo));
+  if (f.map == FitMap::kLogXY) {
+    // As kLogX's, each log's argument rounded first (2 u in the log) and
+    // the larger |log| of the two ends.
+    const auto logRounding = [](double lo, double hi) {
+      return 8.0 * kUnit +
+             (0x1p-21 + 2.0 * kUnit +
+              4.0 * kUnit * std::max(std::abs(std::log(lo)), std::abs(std::log(hi)))) /
+                 (std::log(hi) - std::log(lo));
+    };
+    dsx = logRounding(f.xLo + f.xShift, f.xHi + f.xShift);
+    dsy = logRounding(f.yLo, f.yHi);
+  }
   const double wx = f.breaksX[kx + 1] - f.breaksX[kx];
   const double wy = f.dims == 2 ? f.breaksY[ky + 1] - f.breaksY[ky] : 1.0;
   const double dzx = (2.0 * dsx + 8.0 * kUnit) / wx + 2.0 * kUnit;
@@ -470,7 +503,7 @@ FitResult FitPiecewiseChebyshev(const FitRequest &r) {
   if (maps.empty())
     maps = r.dims == 1 ? std::vector<FitMap>{FitMap::kLinear, FitMap::kSqrtX}
                        : std::vector<FitMap>{FitMap::kSqrtX, FitMap::kCorner};
-  if (r.xLo > 0.0) maps.push_back(FitMap::kLogX);
+  if (r.maps.empty() && r.xLo > 0.0) maps.push_back(FitMap::kLogX);
   uint64_t evaluations = 0;
   // The shapes, fewest coefficients first: per map and grading, patches
   // and degrees per axis (a tight budget: equal degrees only). Each is fitted
@@ -494,6 +527,8 @@ FitResult FitPiecewiseChebyshev(const FitRequest &r) {
               for (int ny = r.dims == 1 ? 1 : 4; ny <= (r.dims == 1 ? 1 : 24); ny += 2) {
                 if (map == FitMap::kCorner && (gradeX != 1.0 || px % 2 != 0)) continue;
                 if (map != FitMap::kLinear && gradeX != 1.0) continue;
+                // One patch in y: every grading is the same shape.
+                if (map == FitMap::kLogXY && py == 1 && gradeY != 1.0) continue;
                 if (gradeY == 0.0 && (map != FitMap::kCorner || py < 2 || r.cornerExclusion <= 0.0))
                   continue;
                 if (r.dims == 2 && tight && nx != ny) continue;

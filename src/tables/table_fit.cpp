@@ -54,6 +54,11 @@ FitResult FitTable(const TableDefinition &table, const BakeSettings &settings, d
   request.exact = ExactValuesOf(table, settings);
   request.tolerance = tolerance;
   request.maxCoefficients = FitCoefficientBudget(tolerance);
+  if (const TableDefinition::FitCoordinates maps = table.FitCoordinateMaps(settings);
+      maps.logarithmic) {
+    request.maps = {FitMap::kLogXY};
+    request.xShift = maps.logShift;
+  }
   // Where the domain stops short of mu = 0, r = 0, its corner is a regular
   // point: the corner map needs no box left out there (every ray of s_y = 0
   // meets the corner's one value).

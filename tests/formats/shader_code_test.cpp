@@ -84,11 +84,11 @@ const std::vector<Table> &Tables() {
 }
 
 // The fits lutbake emits (tests/data/fits, --format fit) of a 2D table with
-// the corner map and two channels, and of a 1D table.
+// the corner map and two channels, of a 1D table, and of sheen_E in logs.
 const std::vector<FitSource> &Fits() {
   static const std::vector<FitSource> fits = [] {
     std::vector<FitSource> f;
-    for (const char *name : {"dfg", "Eavg", "f82"})
+    for (const char *name : {"dfg", "Eavg", "f82", "sheen_E"})
       f.push_back(ReadFitSource(std::string(LUTBAKE_TEST_DATA) + "/fits/" + name + "_fit.h"));
     return f;
   }();

@@ -74,6 +74,56 @@ TEST(ChebyshevFit, FloatEvaluationWithinItsRoundingBound) {
   }
 }
 
+// kLogXY: a form ~ y^-1/2 toward y = 0.01 and log-like toward x = 1e-4
+// (as sheen_E), fitted in log(x + c) and log(y); the bound holds at random
+// points crowded toward the low edges, the map inverts, and the float32
+// evaluation (two logs) stays within its rounding bound.
+TEST(ChebyshevFit, LogarithmicMapsInBothCoordinates) {
+  const auto exact = [](double x, double y) {
+    FitExactValue v;
+    v.value[0] = 0.2 * std::exp(-2.0 * x) / std::sqrt(y) + 0.05 * std::log(x + 1e-3);
+    return v;
+  };
+  FitRequest r;
+  r.dims = 2;
+  r.channels = 1;
+  r.xLo = 1e-4, r.yLo = 0.01;
+  r.exact = exact;
+  r.tolerance = 2e-4;
+  r.maxCoefficients = 256;
+  r.maps = {FitMap::kLogXY};
+  r.xShift = 7e-4;
+  const FitResult fit = FitPiecewiseChebyshev(r);
+  const PiecewiseChebyshev &f = fit.fit;
+  ASSERT_TRUE(fit.met) << fit.certificate.maxError;
+  EXPECT_EQ(f.map, FitMap::kLogXY);
+  EXPECT_EQ(f.xShift, static_cast<double>(7e-4f));
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double worst = 0.0;
+  for (int i = 0; i < 20000; ++i) {
+    const double x = 1e-4 * std::pow(1e4, unit(random)), y = 0.01 * std::pow(100.0, unit(random));
+    double sx, sy, bx, by;
+    f.Map(x, y, &sx, &sy);
+    f.Unmap(sx, sy, &bx, &by);
+    // Map's constants are float32 values, Unmap's exact: a few float ulps
+    // of the logs' span (9.3 and 4.6) apart.
+    ASSERT_NEAR(bx, x, 1e-6 * (x + 7e-4));
+    ASSERT_NEAR(by, y, 1e-6 * y);
+    worst = std::max(worst, std::abs(f.EvaluateFloat(0, x, y) - exact(x, y).value[0]));
+    const float xf = static_cast<float>(x), yf = static_cast<float>(y);
+    int kx = 0, ky = 0;
+    f.Map(xf, yf, &sx, &sy);
+    while (kx + 2 < static_cast<int>(f.breaksX.size()) && sx >= f.breaksX[kx + 1]) ++kx;
+    while (ky + 2 < static_cast<int>(f.breaksY.size()) && sy >= f.breaksY[ky + 1]) ++ky;
+    ASSERT_LE(std::abs(f.EvaluateFloat(0, xf, yf) - f.Evaluate(0, xf, yf)),
+              FitRoundingBound(f, 0, kx, ky))
+        << x << " " << y;
+  }
+  EXPECT_LE(worst, fit.certificate.maxError);
+  EXPECT_GT(worst, fit.certificate.maxError / 20.0);
+}
+
 TEST(ChebyshevFit, OneDimensionalAndBitIdenticalForAnyThreadCount) {
   FitRequest r;
   r.dims = 1;

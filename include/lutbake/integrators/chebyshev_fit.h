@@ -63,6 +63,12 @@ enum class FitMap {
   // s_y >= breaksY[0] > 0 leaves out the corner's box q, b < breaksY[0]
   // where the table has no limit at the corner (0 where it is a regular point).
   kCorner,
+  // s = ((log(x + c) - log(xLo + c)) / (log(xHi + c) - log(xLo + c)),
+  //      (log y - log yLo) / (log yHi - log yLo)), c = xShift >= 0, yLo > 0:
+  // a table that changes by about as much per decade of both coordinates
+  // (sheen_E: ~ r^-1/2 toward small r, log-like toward small mu, with c
+  // keeping the polynomial degree in mu from going to the last decades).
+  kLogXY,
 };
 
 const char *ToString(FitMap map);
@@ -73,6 +79,7 @@ struct PiecewiseChebyshev {
   int channels = 1;
   FitMap map = FitMap::kLinear;
   double xLo = 0.0, xHi = 1.0, yLo = 0.0, yHi = 1.0;
+  double xShift = 0.0;                   // kLogXY's c (a float32 value)
   std::vector<double> breaksX, breaksY;  // in s, increasing
   int nx = 1, ny = 1;                    // coefficients per patch along each axis
   // c_ij of channel c, patch (kx, ky):
@@ -97,6 +104,15 @@ struct PiecewiseChebyshev {
   // to float first.
   float EvaluateFloat(int channel, double x, double y) const;
 };
+
+// The map's float32 constants, as the evaluation and the emitted code use
+// them: a = (X - xOrigin) xScale with X = x, or log(max(x, xLo) + xShift)
+// where logX; b likewise from y (log(max(y, yLo)) where logY).
+struct FitMapConstants {
+  bool logX = false, logY = false;
+  float xOrigin = 0.0f, xScale = 1.0f, yOrigin = 0.0f, yScale = 1.0f;
+};
+FitMapConstants FitMapConstantsOf(const PiecewiseChebyshev &f);
 
 // The certificate of one channel (all bounds absolute, in the table's units).
 struct FitChannelBound {
@@ -131,6 +147,7 @@ struct FitRequest {
   double tolerance = 4.9e-4;      // the certified bound to reach
   int maxCoefficients = 256;      // per channel
   std::vector<FitMap> maps;       // the maps to try (empty: by dims)
+  double xShift = 0.0;            // kLogXY's c
   double cornerExclusion = 1e-2;  // kCorner's breaksY[0]
 };
 

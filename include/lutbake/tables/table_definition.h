@@ -321,6 +321,15 @@ class TableDefinition {
   // value is unbounded at an edge narrows it (sheen_E's Charlie albedo
   // grows as 1 / mu).
   virtual std::array<double, 4> FitDomain(const BakeSettings &settings) const;
+  // The coordinate maps a fit tries: by default those the fitter knows for
+  // the table's dimension; a table that changes by about as much per decade
+  // of both coordinates asks for logarithms of x + logShift and of y
+  // (FitMap::kLogXY; the domain's low ends then above 0).
+  struct FitCoordinates {
+    bool logarithmic = false;
+    double logShift = 0.0;
+  };
+  virtual FitCoordinates FitCoordinateMaps(const BakeSettings &) const { return {}; }
 
   // ---- claims ---------------------------------------------------------
   virtual ValueClaim Range(const BakeSettings &) const { return {0.0, 1.0, false, "in [0, 1]"}; }
