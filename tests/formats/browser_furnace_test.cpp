@@ -29,6 +29,12 @@
 // texel there, ~50 times the largest allowance, so the test fails (tried:
 // see docs/formats.md, "Browser test"). The page posts its pixels to a loopback
 // server (support/headless_chromium.h).
+//
+// The same furnace without textures (issue 30): the page shades with the
+// fitted closed forms of E, Eavg and dfg (tests/data/fits, emitted as GLSL
+// by --format fit-glsl's writer) in place of the three lookups, against the
+// same exact values; each input may then be off by its fit's stated bound
+// (T_max_error) instead of half a binary16 step.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -39,6 +45,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "lutbake/formats/fit_format.h"
 #include "lutbake/formats/table_reader.h"
 #include "lutbake/lutbake.h"
 #include "support/bake_for_test.h"
@@ -73,7 +80,6 @@ const char *kPage = R"(
   const out = {};
   try {
     const load = text => import(URL.createObjectURL(new Blob([text], { type: 'text/javascript' })));
-    const E = await load(sources.E), Eavg = await load(sources.Eavg), dfg = await load(sources.dfg);
     const canvas = document.createElement('canvas');
     canvas.width = canvas.height = SIZE;
     const gl = canvas.getContext('webgl2');
@@ -93,13 +99,22 @@ const char *kPage = R"(
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
     };
-    upload(E.default, 0); upload(Eavg.default, 1); upload(dfg.default, 2);
+    if (!sources.fits) {
+      const E = await load(sources.E), Eavg = await load(sources.Eavg), dfg = await load(sources.dfg);
+      upload(E.default, 0); upload(Eavg.default, 1); upload(dfg.default, 2);
+    }
+    const lookups = sources.fits
+      ? `vec2 AB = lutbake_fit_dfg(mu, r); float E = lutbake_fit_E(mu, r);
+         float Eavg = lutbake_fit_Eavg(r);`
+      : `vec2 AB = lutbake_sample_dfg(dfg_tex, mu, r); float E = lutbake_sample_E(E_tex, mu, r);
+         float Eavg = lutbake_sample_Eavg(Eavg_tex, r);`;
     const vs = `#version 300 es
       void main() { vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
                     gl_Position = vec4(p, 0.0, 1.0); }`;
     const fs = `#version 300 es
 precision highp float;
 ${sources.glsl}
+${sources.fits || ''}
 uniform highp sampler2D E_tex, Eavg_tex, dfg_tex;
 out vec4 color;
 vec3 ms(vec3 F0, float E, float Eavg) {
@@ -108,9 +123,7 @@ vec3 ms(vec3 F0, float E, float Eavg) {
 void main() {
   float mu = gl_FragCoord.x / float(${SIZE});
   float r = gl_FragCoord.y / float(${SIZE});
-  vec2 AB = lutbake_sample_dfg(dfg_tex, mu, r);
-  float E = lutbake_sample_E(E_tex, mu, r);
-  float Eavg = lutbake_sample_Eavg(Eavg_tex, r);
+  ${lookups}
   vec3 one = vec3(1.0);
   float white = (lutbake_specular_albedo(AB, one, one) + ms(one, E, Eavg)).x;
   float tinted = (lutbake_specular_albedo(AB, vec3(0.04), one) + ms(vec3(0.04), E, Eavg)).x;
@@ -151,22 +164,11 @@ void main() {
 })();
 )";
 
-TEST(BrowserFurnace, WebGl2ShadesTheFurnaceFromTheEmittedModuleAndGlsl) {
-  if (std::system("command -v chromium >/dev/null 2>&1") != 0)
-    GTEST_SKIP() << "chromium not found: the WebGL2 furnace is not rendered here "
-                    "(scripts/setup.sh installs Debian's chromium)";
-  const fs::path d = test::Scratch("browser_furnace");
-  // --tables E,Eavg,dfg --size kSize --format exr,js-half --shader glsl
-  BakeRequest request = test::BakeRequestFor(d);
-  request.tables = {"E", "Eavg", "dfg"};
-  request.size = kSize;
-  request.formats = {"exr", "js-half"};
-  request.shaders = {"glsl"};
-  Bake(request);
-  const nlohmann::json sources = {{"E", ReadText(d / "E.js")},
-                                  {"Eavg", ReadText(d / "Eavg.js")},
-                                  {"dfg", ReadText(d / "dfg.js")},
-                                  {"glsl", ReadText(d / "lutbake.glsl")}};
+// Renders the page with `sources` and holds every pixel to the furnace of
+// the exact values of directory d's EXR files, each input allowed to move by
+// `inputBound(value, input)` (input 0, 1: A, B; 2: E; 3: E_avg).
+template <typename Bound>
+void RenderAndCompare(const fs::path &d, const nlohmann::json &sources, const Bound &inputBound) {
   const std::string html =
       "<!doctype html><script type=\"module\">\nconst SIZE = " + std::to_string(kSize) +
       ";\nconst sources = " + sources.dump() + ";\n" + kPage + "</script>\n";
@@ -185,7 +187,6 @@ TEST(BrowserFurnace, WebGl2ShadesTheFurnaceFromTheEmittedModuleAndGlsl) {
   const Table dfg = ReadExrTable((d / "dfg.exr").string());
   ASSERT_EQ(dfg.width(), kSize);
   ASSERT_EQ(E.width(), kSize);
-  const auto halfStep = [](double v) { return std::max(std::abs(v) * 0x1p-11, 0x1p-25); };
   double worst = 0.0, worstAllowed = 0.0, furnaceWorst = 0.0;
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
@@ -195,7 +196,8 @@ TEST(BrowserFurnace, WebGl2ShadesTheFurnaceFromTheEmittedModuleAndGlsl) {
       std::array<double, 4> allowed = {0, 0, 0, 0};
       for (int corner = 0; corner < 16; ++corner) {
         double v[4];
-        for (int k = 0; k < 4; ++k) v[k] = in[k] + ((corner >> k) & 1 ? 1 : -1) * halfStep(in[k]);
+        for (int k = 0; k < 4; ++k)
+          v[k] = in[k] + ((corner >> k) & 1 ? 1 : -1) * inputBound(in[k], k);
         const std::array<double, 4> moved = Furnace(v[0], v[1], v[2], v[3]);
         for (int c = 0; c < 4; ++c) allowed[c] = std::max(allowed[c], std::abs(moved[c] - want[c]));
       }
@@ -212,10 +214,65 @@ TEST(BrowserFurnace, WebGl2ShadesTheFurnaceFromTheEmittedModuleAndGlsl) {
       }
     }
   std::printf(
-      "WebGL2 furnace (%s, %s): worst |rendered - lutbake| %.3g (allowed up to %.3g); "
+      "WebGL2 furnace%s (%s, %s): worst |rendered - lutbake| %.3g (allowed up to %.3g); "
       "white furnace within %.3g of 1\n",
-      page["target"].get<std::string>().c_str(), page["renderer"].get<std::string>().c_str(), worst,
-      worstAllowed, furnaceWorst);
+      sources.contains("fits") ? " from fits" : "", page["target"].get<std::string>().c_str(),
+      page["renderer"].get<std::string>().c_str(), worst, worstAllowed, furnaceWorst);
+}
+
+bool HaveChromium() { return std::system("command -v chromium >/dev/null 2>&1") == 0; }
+
+TEST(BrowserFurnace, WebGl2ShadesTheFurnaceFromTheEmittedModuleAndGlsl) {
+  if (!HaveChromium())
+    GTEST_SKIP() << "chromium not found: the WebGL2 furnace is not rendered here "
+                    "(scripts/setup.sh installs Debian's chromium)";
+  const fs::path d = test::Scratch("browser_furnace");
+  // --tables E,Eavg,dfg --size kSize --format exr,js-half --shader glsl
+  BakeRequest request = test::BakeRequestFor(d);
+  request.tables = {"E", "Eavg", "dfg"};
+  request.size = kSize;
+  request.formats = {"exr", "js-half"};
+  request.shaders = {"glsl"};
+  Bake(request);
+  const nlohmann::json sources = {{"E", ReadText(d / "E.js")},
+                                  {"Eavg", ReadText(d / "Eavg.js")},
+                                  {"dfg", ReadText(d / "dfg.js")},
+                                  {"glsl", ReadText(d / "lutbake.glsl")}};
+  const auto halfStep = [](double v, int) { return std::max(std::abs(v) * 0x1p-11, 0x1p-25); };
+  RenderAndCompare(d, sources, halfStep);
+  test::RemoveBrowserDirectory(d);
+}
+
+TEST(BrowserFurnace, WebGl2ShadesTheFurnaceFromTheFittedClosedForms) {
+  if (!HaveChromium())
+    GTEST_SKIP() << "chromium not found: the WebGL2 furnace is not rendered here "
+                    "(scripts/setup.sh installs Debian's chromium)";
+  const fs::path d = test::Scratch("browser_furnace_fits");
+  // --tables E,Eavg,dfg --size kSize --format exr --shader glsl: the exact
+  // values and the shading functions; the fits are the shipped ones.
+  BakeRequest request = test::BakeRequestFor(d);
+  request.tables = {"E", "Eavg", "dfg"};
+  request.size = kSize;
+  request.formats = {"exr"};
+  request.shaders = {"glsl"};
+  Bake(request);
+  std::string fits;
+  double bound[4] = {0, 0, 0, 0};  // A, B, E, E_avg
+  for (const char *name : {"E", "Eavg", "dfg"}) {
+    const FitSource f = ReadFitSource(std::string(LUTBAKE_TEST_DATA) + "/fits/" + name + "_fit.h");
+    const bool twoD = f.fit.dims == 2;
+    fits += FitShaderSource(
+        ShaderLanguage::kGlsl, f.name,
+        twoD ? std::vector<std::string>{"mu", "roughness"} : std::vector<std::string>{"roughness"},
+        f.fit, {}, {});
+    const std::string n = name;
+    if (n == "dfg") bound[0] = bound[1] = f.maxError;
+    if (n == "E") bound[2] = f.maxError;
+    if (n == "Eavg") bound[3] = f.maxError;
+  }
+  for (double b : bound) ASSERT_GT(b, 0.0);
+  const nlohmann::json sources = {{"glsl", ReadText(d / "lutbake.glsl")}, {"fits", fits}};
+  RenderAndCompare(d, sources, [&](double, int input) { return bound[input]; });
   test::RemoveBrowserDirectory(d);
 }
 
