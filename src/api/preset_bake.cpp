@@ -248,9 +248,10 @@ void ValidateTableNames(const BakeRequest &r) {
   for (size_t i = 0; i < r.tables->size(); ++i) {
     const std::string &name = (*r.tables)[i];
     if (std::find(names.begin(), names.end(), name) == names.end())
-      throw UsageError("--tables '" + JoinList(*r.tables) + "' names '" + name +
-                       "', which is not accepted; accepted: a comma-separated subset of " +
-                       JoinNames(names));
+      throw UsageError((r.tables->size() == 1 ? "--tables '" + name + "' is not accepted"
+                                              : "--tables '" + JoinList(*r.tables) + "' names '" +
+                                                    name + "', which is not accepted") +
+                       "; accepted: a comma-separated subset of " + JoinNames(names));
     if (std::find(r.tables->begin(), r.tables->begin() + i, name) != r.tables->begin() + i)
       throw UsageError("--tables '" + JoinList(*r.tables) + "' names '" + name + "' twice");
   }

@@ -41,8 +41,10 @@ CLI::Validator ListOf(std::vector<std::string> names) {
           bool known = false;
           for (const std::string &n : names) known = known || items[i] == n;
           if (!known)
-            return "'" + value + "' names '" + items[i] +
-                   "', which is not accepted; accepted: a comma-separated subset of " + accepted +
+            return (items.size() == 1
+                        ? "'" + items[i] + "' is not accepted"
+                        : "'" + value + "' names '" + items[i] + "', which is not accepted") +
+                   "; accepted: a comma-separated subset of " + accepted +
                    DidYouMean(items[i], names);
           for (size_t j = 0; j < i; ++j)
             if (items[j] == items[i]) return "'" + value + "' names '" + items[i] + "' twice";
