@@ -28,7 +28,7 @@ bakes=(
   "--tables Favg --size 6 --fresnel f82 --format exr,bin,header"
   "--size 16 --namespace my_luts"
 )
-presets=$("$lutbake" presets | awk '{print $1}')
+presets=$("$lutbake" presets | awk '/^[^ ]/ {print $1}')
 for p in $presets; do
   if [ "$p" = cycles ]; then
     bakes+=("--preset cycles --files table_ggx_E.h,table_ggx_Eavg.h,table_ggx_glass_E.h,table_ggx_glass_inv_E.h")

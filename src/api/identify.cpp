@@ -30,18 +30,19 @@ const std::vector<std::string> kSmithNames = {"correlated", "separable", "schlic
 const std::vector<std::string> kTables = {"dfg", "E", "Eavg", "sheen_E", "f82"};
 const std::vector<std::string> kMeanings = {"A", "B", "E", "sheen_E", "f82", "Eavg", "-"};
 
-PresetVisibility VisibilityOf(const std::string &smith) {
-  return smith == "separable"            ? PresetVisibility::kSeparable
-         : smith == "schlick-ggx-ibl"    ? PresetVisibility::kSchlickGgx
-         : smith == "smith-joint-approx" ? PresetVisibility::kSmithJointApprox
-                                         : PresetVisibility::kCorrelated;
+// The model's G2 named `smith` (one of kSmithNames).
+void SetVisibility(const std::string &smith, PresetModel *model) {
+  model->smith = smith == "separable" ? SmithForm::kSeparable : SmithForm::kCorrelated;
+  model->fitted = smith == "schlick-ggx-ibl"      ? FittedVisibility::kSchlickGgx
+                  : smith == "smith-joint-approx" ? FittedVisibility::kSmithJointApprox
+                                                  : FittedVisibility::kNone;
 }
 
-std::string SmithName(PresetVisibility v) {
-  return kSmithNames[static_cast<size_t>(v == PresetVisibility::kSeparable          ? 1
-                                         : v == PresetVisibility::kSchlickGgx       ? 2
-                                         : v == PresetVisibility::kSmithJointApprox ? 3
-                                                                                    : 0)];
+std::string SmithName(const PresetModel &m) {
+  return kSmithNames[static_cast<size_t>(m.fitted == FittedVisibility::kSchlickGgx         ? 2
+                                         : m.fitted == FittedVisibility::kSmithJointApprox ? 3
+                                         : m.smith == SmithForm::kSeparable                ? 1
+                                                                                           : 0)];
 }
 
 bool SplitSumChannel(const std::string &meaning) {
@@ -69,8 +70,8 @@ std::string LayoutKey(const PresetTexture &t) {
     key +=
         c.meaning + FormatDouble(c.scale) + FormatDouble(c.offset) + FormatDouble(c.clampMax) + ",";
   const PresetModel &m = t.model;
-  return key + ToString(m.visibility) + ToString(m.alpha) + FormatDouble(m.alphaMin) +
-         std::to_string(static_cast<int>(m.sheenVisibility)) + ToString(m.sheenAlpha);
+  return key + DescribeVisibility(m) + DescribeAlpha(m.alpha) + FormatDouble(m.alphaMin) +
+         std::to_string(static_cast<int>(m.sheenVisibility)) + DescribeAlpha(m.sheenAlpha);
 }
 
 int DecodedChannels(const RawImage &image, const std::string &encoding) {
@@ -106,8 +107,8 @@ Candidate Realise(TableConvention convention, const RawImage &image) {
     t = chosen ? *chosen : preset->textures.front();
     convention.texture = t.file;
     convention.table = t.file.substr(0, t.file.find('.'));
-    if (convention.smith.empty()) convention.smith = SmithName(t.model.visibility);
-    t.model.visibility = VisibilityOf(convention.smith);
+    if (convention.smith.empty()) convention.smith = SmithName(t.model);
+    SetVisibility(convention.smith, &t.model);
     convention.texels = ToString(t.axes[0].placement);
     convention.channels.clear();
     for (const PresetChannel &ch : t.channels) convention.channels.push_back(ch.meaning);
@@ -143,8 +144,8 @@ Candidate Realise(TableConvention convention, const RawImage &image) {
     for (const std::string &meaning : convention.channels)
       t.channels.push_back({meaning == "-" ? "zero" : meaning});
     if (convention.smith.empty()) convention.smith = "correlated";
-    t.model.visibility = VisibilityOf(convention.smith);
-    t.model.alpha = convention.alpha == "linear" ? PresetAlpha::kLinear : PresetAlpha::kSquared;
+    SetVisibility(convention.smith, &t.model);
+    t.model.alpha = convention.alpha == "linear" ? AlphaMapping::kLinear : AlphaMapping::kSquared;
     t.model.sheenVisibility = SheenVisibility::kCharlie;
     c.departures = 1;  // lutbake's own layout: a preset's, if equal, wins
   }

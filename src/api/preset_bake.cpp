@@ -114,14 +114,14 @@ nlohmann::ordered_json AxisJson(const PresetAxis &axis, const char *which) {
 nlohmann::ordered_json ModelJson(const PresetTexture &texture) {
   nlohmann::ordered_json model;
   model["ndf"] = "ggx";
-  model["visibility"] = ToString(texture.model.visibility);
-  model["alpha"] = ToString(texture.model.alpha);
+  model["visibility"] = DescribeVisibility(texture.model);
+  model["alpha"] = DescribeAlpha(texture.model.alpha);
   if (texture.model.alphaMin > 0.0) model["alphaMin"] = texture.model.alphaMin;
   if (texture.model.unitEtaWindow > 0.0) model["unitEtaWindow"] = texture.model.unitEtaWindow;
   for (const PresetChannel &c : texture.channels)
     if (c.meaning == "sheen_E") {
       model["sheenVisibility"] = ToString(texture.model.sheenVisibility);
-      model["sheenAlpha"] = ToString(texture.model.sheenAlpha);
+      model["sheenAlpha"] = DescribeAlpha(texture.model.sheenAlpha);
       if (texture.model.sheenAlphaMin > 0.0) model["sheenAlphaMin"] = texture.model.sheenAlphaMin;
       break;
     }

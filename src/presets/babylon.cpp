@@ -62,7 +62,7 @@ PresetTexture BrdfTexture(const char *file, const char *format, int size) {
   t.file = file;
   t.format = format;
   t.axes = {CentresAxis("mu", size), CentresAxis("roughness", size)};
-  t.model.visibility = PresetVisibility::kCorrelated;
+  t.model.smith = SmithForm::kCorrelated;
   t.sampling =
       "getBRDFLookup(NdotV, perceptualRoughness): texture2D(environmentBrdfSampler, "
       "vec2(NdotV, perceptualRoughness)).rgb (fromRGBD where not expanded)";
@@ -85,7 +85,7 @@ const Preset &BabylonPreset() {
     PresetTexture brdf = BrdfTexture("environmentBRDFTexture.png", "png-rgbd", 256);
     brdf.channels = {{"B"}, {"E"}, {"sheen_E"}};
     brdf.model.sheenVisibility = SheenVisibility::kAshikhmin;
-    brdf.model.sheenAlpha = PresetAlpha::kSquared;
+    brdf.model.sheenAlpha = AlphaMapping::kSquared;
     brdf.notes = std::string(kRgbdNote) +
                  " z, the sheen albedo, exceeds 1 toward grazing low roughness; the divisor "
                  "that holds it there coarsens x and y of the same texel.";
@@ -112,7 +112,7 @@ const Preset &BabylonPreset() {
     fuzz.file = "environmentFuzzBRDFTexture.png";
     fuzz.format = "png-rgbd";
     fuzz.axes = {CentresAxis("roughness", 32), CentresAxis("mu", 32)};
-    fuzz.model.alpha = PresetAlpha::kLinear;
+    fuzz.model.alpha = AlphaMapping::kLinear;
     // stored = (value - low) / (high - low), Babylon's ranges, clamped to
     // [0, 1] (the table's b reaches -0.18133, below -0.18).
     const auto ranged = [](const char *meaning, double low, double high) {

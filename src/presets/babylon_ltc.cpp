@@ -41,7 +41,7 @@ const Preset &BabylonLtcPreset() {
     // 0, det M^-1 = 0 (a black light). Held at 2^-24 instead (det > 0); the
     // texel's bound carries the 6e-8 it moved.
     t.channels[0].clampMin = 0x1p-24;
-    t.model.visibility = PresetVisibility::kCorrelated;
+    t.model.smith = SmithForm::kCorrelated;
     t.sampling =
         "texture2D(areaLightsLTC1Sampler / areaLightsLTC2Sampler, vec2(roughness, sqrt(1.0 - "
         "dotNV)) * (63.0 / 64.0) + 0.5 / 64.0) (LTCUv)";

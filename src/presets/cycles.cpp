@@ -68,7 +68,7 @@ PresetTexture CyclesTable(const std::string &name, std::vector<PresetAxis> axes,
   t.format = "c-array";
   t.axes = std::move(axes);
   t.channels = {{meaning}};
-  t.model.visibility = PresetVisibility::kCorrelated;
+  t.model.smith = SmithForm::kCorrelated;
   if (std::string(meaning).rfind("glass", 0) == 0) t.model.unitEtaWindow = 1e-4;
   t.sampling = sampling;
   t.source = "blender/cycles src/scene/shader.tables (" + name +

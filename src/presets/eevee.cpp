@@ -27,7 +27,7 @@ const Preset &EeveePreset() {
     mu.mapping = PresetMapping::kOneMinusSquare;
     t.axes = {EdgesAxis("roughness", 64), mu};
     t.channels = {{"A"}, {"B"}, {"f82"}};
-    t.model.visibility = PresetVisibility::kSeparable;
+    t.model.smith = SmithForm::kSeparable;
     t.sampling =
         "vec2(roughness, sqrt(1.0 - NV)) * (63.0 / 64.0) + 0.5 / 64.0 (eevee_bxdf_lib.glsl, "
         "brdf_lut)";

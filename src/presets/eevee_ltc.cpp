@@ -39,7 +39,7 @@ PresetTexture EeveeLtcArray(const char *file) {
   PresetAxis mu = EdgesAxis("mu", 64);
   mu.mapping = PresetMapping::kOneMinusSquare;
   t.axes = {EdgesAxis("roughness", 64), mu};
-  t.model.visibility = PresetVisibility::kCorrelated;
+  t.model.smith = SmithForm::kCorrelated;
   t.sampling =
       "vec2(roughness, sqrt(1.0 - NV)) * (63.0 / 64.0) + 0.5 / 64.0 (UTIL_TEX_UV_SCALE, "
       "UTIL_TEX_UV_BIAS), layer UTIL_LTC_MAT_LAYER / UTIL_LTC_MAG_LAYER (.zw)";

@@ -36,9 +36,9 @@ Preset MakeFilament(const char *name, int size, const char *what) {
   t.format = "inc-half";
   t.axes = {CentresAxis("mu", size), CentresAxis("roughness", size)};
   t.channels = {{"B"}, {"E"}, {"sheen_E"}};
-  t.model.visibility = PresetVisibility::kCorrelated;
+  t.model.smith = SmithForm::kCorrelated;
   t.model.sheenVisibility = SheenVisibility::kAshikhmin;
-  t.model.sheenAlpha = PresetAlpha::kSquared;
+  t.model.sheenAlpha = AlphaMapping::kSquared;
   t.sampling = "textureLod(sampler0_iblDFG, vec2(NoV, perceptualRoughness), 0.0).rgb";
   t.source =
       "google/filament libs/ibl/src/CubemapIBL.cpp (CubemapIBL::DFG, DFV_Multiscatter, "

@@ -43,7 +43,7 @@ const Preset &GltfSampleRendererPreset() {
     sheen.clampMax = 1.0;
     charlie.channels = {{"zero"}, {"zero"}, sheen};
     charlie.model.sheenVisibility = SheenVisibility::kAshikhmin;
-    charlie.model.sheenAlpha = PresetAlpha::kSquared;
+    charlie.model.sheenAlpha = AlphaMapping::kSquared;
     charlie.sampling = "texture(u_CharlieLUT, clamp(vec2(NdotV, sheenRoughness), 0.0, 1.0)).b";
     charlie.notes =
         "256 x 256: the shader's normalised coordinates take any size. Values above 1 (grazing, "

@@ -28,7 +28,7 @@ const Preset &GodotPreset() {
     roughness.reversed = true;
     t.axes = {CentresAxis("mu", 128), roughness};
     t.channels = {{"B"}, {"E"}};
-    t.model.visibility = PresetVisibility::kSchlickGgx;
+    t.model.fitted = FittedVisibility::kSchlickGgx;
     t.sampling = "textureLod(dfg, vec2(NoV, 1.0 - roughness), 0.0).rg";
     t.source =
         "godotengine/godot servers/rendering/renderer_rd/shaders/environment/integrate_dfg.glsl, "

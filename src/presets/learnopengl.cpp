@@ -25,7 +25,7 @@ const Preset &LearnOpenGlPreset() {
     t.format = "ktx2-half";
     t.axes = {CentresAxis("mu", 512), CentresAxis("roughness", 512)};
     t.channels = {{"A"}, {"B"}};
-    t.model.visibility = PresetVisibility::kSchlickGgx;
+    t.model.fitted = FittedVisibility::kSchlickGgx;
     t.sampling = "texture(brdfLUT, vec2(max(dot(N, V), 0.0), roughness)).rg";
     t.source =
         "JoeyDeVries/LearnOpenGL src/6.pbr/2.2.1.ibl_specular/2.2.1.brdf.fs, 2.2.1.pbr.fs, "

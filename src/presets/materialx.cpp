@@ -32,10 +32,10 @@ const Preset &MaterialxPreset() {
     t.format = "exr";
     t.axes = {CentresAxis("mu", 128), CentresAxis("roughness", 128)};
     t.channels = {{"A"}, {"B"}, {"sheen_E"}};
-    t.model.visibility = PresetVisibility::kCorrelated;
-    t.model.alpha = PresetAlpha::kLinear;  // the axis holds alpha
+    t.model.smith = SmithForm::kCorrelated;
+    t.model.alpha = AlphaMapping::kLinear;  // the axis holds alpha
     t.model.sheenVisibility = SheenVisibility::kAshikhmin;
-    t.model.sheenAlpha = PresetAlpha::kLinear;
+    t.model.sheenAlpha = AlphaMapping::kLinear;
     t.model.sheenAlphaMin = 0.005;  // mx_imageworks_sheen_NDF: max(roughness, 0.005)
     t.sampling =
         "texture($albedoTable, vec2(NdotV, alpha)).rg (mx_ggx_dir_albedo_table_lookup); "

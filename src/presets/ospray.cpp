@@ -61,7 +61,7 @@ PresetTexture OsprayTable(const std::string &name, std::vector<PresetAxis> axes,
   t.format = "ispc-array";
   t.axes = std::move(axes);
   t.channels = {{meaning}};
-  t.model.visibility = PresetVisibility::kCorrelated;
+  t.model.smith = SmithForm::kCorrelated;
   t.model.alphaMin = 0.001;
   t.sampling = sampling;
   t.source = kSource;

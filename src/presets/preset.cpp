@@ -37,18 +37,25 @@ const char *ToString(TexelPlacement placement) {
   return placement == TexelPlacement::kCentres ? "centres" : "edges";
 }
 
-const char *ToString(PresetVisibility visibility) {
-  switch (visibility) {
-    case PresetVisibility::kCorrelated: return "smith-correlated";
-    case PresetVisibility::kSeparable: return "smith-separable";
-    case PresetVisibility::kSchlickGgx: return "schlick-ggx k = alpha / 2";
-    case PresetVisibility::kSmithJointApprox: return "smith-joint-approx a = alpha";
+std::string DescribeVisibility(const PresetModel &model) {
+  switch (model.fitted) {
+    case FittedVisibility::kSchlickGgx: return "schlick-ggx k = alpha / 2";
+    case FittedVisibility::kSmithJointApprox: return "smith-joint-approx a = alpha";
+    case FittedVisibility::kNone: break;
   }
-  return "?";
+  return "smith-" + std::string(ToString(model.smith));
 }
 
-const char *ToString(PresetAlpha alpha) {
-  return alpha == PresetAlpha::kSquared ? "alpha = roughness^2" : "alpha = roughness";
+const char *DescribeAlpha(AlphaMapping alpha) {
+  return alpha == AlphaMapping::kSquared ? "alpha = roughness^2" : "alpha = roughness";
+}
+
+BakeSettings PresetModel::TableSettings() const {
+  BakeSettings settings;
+  settings.smith = smith;
+  settings.sheenVisibility = sheenVisibility;
+  settings.sheenAlpha = sheenAlpha;
+  return settings;
 }
 
 double PresetAxis::Coordinate(int i) const {
@@ -126,9 +133,8 @@ Needs NeedsOf(const PresetTexture &texture) {
   return needs;
 }
 
-double AlphaOf(PresetAlpha mapping, double roughness, double alphaMin) {
-  const double alpha = mapping == PresetAlpha::kSquared ? roughness * roughness : roughness;
-  return std::max(alpha, alphaMin);
+double AlphaOf(AlphaMapping mapping, double roughness, double alphaMin) {
+  return std::max(AlphaFromRoughness(mapping, roughness), alphaMin);
 }
 
 // The split-sum terms {A, B} at (mu, alpha) under the texture's model: the
@@ -137,8 +143,7 @@ double AlphaOf(PresetAlpha mapping, double roughness, double alphaMin) {
 // 0 (the mirror: G2 = 1 in every form, o.h = mu) A = 1 - (1 - mu)^5 and B =
 // (1 - mu)^5 exactly.
 PointValue SplitSum(const PresetModel &model, double mu, double alpha) {
-  if (model.visibility == PresetVisibility::kSchlickGgx ||
-      model.visibility == PresetVisibility::kSmithJointApprox) {
+  if (model.fitted != FittedVisibility::kNone) {
     PointValue v;
     v.quadrature = true;
     if (alpha == 0.0) {
@@ -148,11 +153,8 @@ PointValue SplitSum(const PresetModel &model, double mu, double alpha) {
       v.exact = true;
       return v;
     }
-    const SplitSumQuadrature q = IntegrateFittedSplitSumQuadrature(
-        alpha,
-        model.visibility == PresetVisibility::kSchlickGgx ? FittedVisibility::kSchlickGgx
-                                                          : FittedVisibility::kSmithJointApprox,
-        mu, kDefaultQuadratureTolerance);
+    const SplitSumQuadrature q =
+        IntegrateFittedSplitSumQuadrature(alpha, model.fitted, mu, kDefaultQuadratureTolerance);
     if (!q.converged)
       throw std::runtime_error("the fitted split sum did not converge at mu = " + FormatDouble(mu) +
                                ", alpha = " + FormatDouble(alpha));
@@ -162,10 +164,7 @@ PointValue SplitSum(const PresetModel &model, double mu, double alpha) {
     v.error[1] = q.boundB;
     return v;
   }
-  BakeSettings settings;
-  settings.smith = model.visibility == PresetVisibility::kSeparable ? SmithForm::kSeparable
-                                                                    : SmithForm::kCorrelated;
-  return TableNamed("dfg").Evaluate(settings, mu, std::sqrt(alpha));
+  return TableNamed("dfg").Evaluate(model.TableSettings(), mu, std::sqrt(alpha));
 }
 
 // The albedo of Burley's diffuse as Unity HDRP renormalises it: its
@@ -229,8 +228,7 @@ double ClippedSphere(double z, double len) {
 // axis, j over the roughness axis) at i * roughness count + j.
 std::vector<LtcTexel> FitPresetLtc(const PresetTexture &texture, int muAxis, int roughnessAxis) {
   const PresetModel &model = texture.model;
-  if (model.visibility != PresetVisibility::kCorrelated &&
-      model.visibility != PresetVisibility::kSeparable)
+  if (model.fitted != FittedVisibility::kNone)
     throw std::invalid_argument(texture.file + ": the LTC channels take an exact Smith form");
   if (muAxis < 0) throw std::invalid_argument(texture.file + ": the LTC channels need a mu axis");
   const PresetAxis &ma = texture.axes[static_cast<size_t>(muAxis)];
@@ -238,14 +236,12 @@ std::vector<LtcTexel> FitPresetLtc(const PresetTexture &texture, int muAxis, int
   std::vector<double> mu, roughness;
   for (int i = 0; i < ma.count; ++i) mu.push_back(ma.Quantity(i));
   for (int j = 0; j < ra.count; ++j) roughness.push_back(ra.Quantity(j));
-  const SmithForm smith = model.visibility == PresetVisibility::kSeparable ? SmithForm::kSeparable
-                                                                           : SmithForm::kCorrelated;
   LtcFitSettings settings;
   settings.moments = false;  // the channels "E" and "B" integrate them
   return FitLtcGrid(
       [&](double q) {
         return MicrofacetLtcLobe(Ndf{NdfKind::kGgx, AlphaOf(model.alpha, q, model.alphaMin)},
-                                 smith);
+                                 model.smith);
       },
       mu, roughness, settings);
 }
@@ -300,14 +296,7 @@ void TexelChannels(const PresetTexture &texture, const Needs &needs, const AxisR
     return texture.axes[static_cast<size_t>(axis)].Quantity(axisTexel(axis));
   };
   // The settings of the tables the channels read: the model's.
-  BakeSettings microfacetSettings;
-  microfacetSettings.smith = model.visibility == PresetVisibility::kSeparable
-                                 ? SmithForm::kSeparable
-                                 : SmithForm::kCorrelated;
-  BakeSettings sheenSettings;
-  sheenSettings.sheenVisibility = model.sheenVisibility;
-  sheenSettings.sheenAlpha =
-      model.sheenAlpha == PresetAlpha::kSquared ? SheenAlpha::kSquared : SheenAlpha::kLinear;
+  const BakeSettings settings = model.TableSettings();
   const double roughness = roles.roughness >= 0 ? quantity(roles.roughness) : 0.0;
   const double mu = roles.mu >= 0 ? quantity(roles.mu) : 0.0;
   double eta = 1.0;
@@ -318,8 +307,7 @@ void TexelChannels(const PresetTexture &texture, const Needs &needs, const AxisR
   const double alpha = AlphaOf(model.alpha, roughness, model.alphaMin);
   PointValue split, sheen, sheenB, f82, average, disney, glass, glassAverage, spec, specAverage;
   if (needs.sheenB) {
-    const double sheenAlpha =
-        model.sheenAlpha == PresetAlpha::kSquared ? roughness * roughness : roughness;
+    const double sheenAlpha = AlphaFromRoughness(model.sheenAlpha, roughness);
     const SheenIntegral b = IntegrateSheenSchlickWeightedAdaptive(model.sheenVisibility, sheenAlpha,
                                                                   mu, kSheenBTolerance);
     sheenB.value[0] = b.value;
@@ -328,28 +316,26 @@ void TexelChannels(const PresetTexture &texture, const Needs &needs, const AxisR
   if (needs.disney) disney = DisneyDiffuseAlbedo(mu, roughness);
   if (needs.splitSum) split = SplitSum(model, mu, alpha);
   // The sheen's roughness with the engine's clamp of its alpha.
-  const double sheenRoughness = model.sheenAlpha == PresetAlpha::kSquared
+  const double sheenRoughness = model.sheenAlpha == AlphaMapping::kSquared
                                     ? std::max(roughness, std::sqrt(model.sheenAlphaMin))
                                     : std::max(roughness, model.sheenAlphaMin);
-  if (needs.sheen) sheen = TableNamed("sheen_E").Evaluate(sheenSettings, mu, sheenRoughness);
-  if (needs.f82) f82 = TableNamed("f82").Evaluate(microfacetSettings, mu, std::sqrt(alpha));
-  if (needs.average)
-    average = TableNamed("Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), 0.0);
+  if (needs.sheen) sheen = TableNamed("sheen_E").Evaluate(settings, mu, sheenRoughness);
+  if (needs.f82) f82 = TableNamed("f82").Evaluate(settings, mu, std::sqrt(alpha));
+  if (needs.average) average = TableNamed("Eavg").Evaluate(settings, std::sqrt(alpha), 0.0);
   if (needs.glass || needs.glassAverage) {
     // The engine's own index-matched interface: no lobe, albedo 1.
     if (std::abs(eta - 1.0) < model.unitEtaWindow) {
       glass.value[0] = glassAverage.value[0] = 1.0;
     } else {
       if (needs.glass)
-        glass = TableNamed("glass_E").Evaluate3D(microfacetSettings, mu, std::sqrt(alpha), eta);
+        glass = TableNamed("glass_E").Evaluate3D(settings, mu, std::sqrt(alpha), eta);
       if (needs.glassAverage)
-        glassAverage = TableNamed("glass_Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), eta);
+        glassAverage = TableNamed("glass_Eavg").Evaluate(settings, std::sqrt(alpha), eta);
     }
   }
-  if (needs.spec)
-    spec = TableNamed("spec_E").Evaluate3D(microfacetSettings, mu, std::sqrt(alpha), eta);
+  if (needs.spec) spec = TableNamed("spec_E").Evaluate3D(settings, mu, std::sqrt(alpha), eta);
   if (needs.specAverage)
-    specAverage = TableNamed("spec_Eavg").Evaluate(microfacetSettings, std::sqrt(alpha), eta);
+    specAverage = TableNamed("spec_Eavg").Evaluate(settings, std::sqrt(alpha), eta);
   // The single-valued meanings and the integral each reads.
   const std::pair<const char *, const PointValue *> kSingle[] = {{"sheen_E", &sheen},
                                                                  {"f82", &f82},

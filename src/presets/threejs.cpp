@@ -22,7 +22,7 @@ const Preset &ThreejsPreset() {
     t.format = "threejs-dfg";
     t.axes = {CentresAxis("roughness", 16), CentresAxis("mu", 16)};
     t.channels = {{"A"}, {"B"}};
-    t.model.visibility = PresetVisibility::kCorrelated;
+    t.model.smith = SmithForm::kCorrelated;
     t.sampling = "texture2D(dfgLUT, vec2(roughness, dotNV)).rg";
     t.source =
         "mrdoob/three.js src/renderers/shaders/DFGLUTData.js, "

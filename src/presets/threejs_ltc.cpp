@@ -38,7 +38,7 @@ const Preset &ThreejsLtcPreset() {
     t.axes = {EdgesAxis("roughness", 64), mu};
     t.channels = {{"ltc_m00"}, {"ltc_m20"}, {"ltc_m02"}, {"ltc_m22"},
                   {"E"},       {"B"},       {"zero"},    {"clipped_sphere"}};
-    t.model.visibility = PresetVisibility::kCorrelated;
+    t.model.smith = SmithForm::kCorrelated;
     t.sampling =
         "texture2D(ltc_1 / ltc_2, vec2(roughness, sqrt(1.0 - dotNV)) * (63.0 / 64.0) + 0.5 / "
         "64.0) (LTC_Uv)";

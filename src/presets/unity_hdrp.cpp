@@ -30,7 +30,7 @@ const Preset &UnityHdrpPreset() {
     PresetChannel diffuse{"disney_diffuse"};
     diffuse.offset = -0.5;
     t.channels = {{"B"}, {"E"}, diffuse};
-    t.model.visibility = PresetVisibility::kCorrelated;
+    t.model.smith = SmithForm::kCorrelated;
     t.sampling =
         "SAMPLE_TEXTURE2D_LOD(_PreIntegratedFGD_GGXDisneyDiffuse, s_linear_clamp_sampler, "
         "Remap01ToHalfTexelCoord(float2(sqrt(NdotV), perceptualRoughness), "
@@ -56,7 +56,7 @@ const Preset &UnityHdrpPreset() {
     b.scale = e.scale = inverseTwoPi;
     charlie.channels = {b, e, {"fabric_lambert"}};
     charlie.model.sheenVisibility = SheenVisibility::kCharlie;
-    charlie.model.sheenAlpha = PresetAlpha::kSquared;
+    charlie.model.sheenAlpha = AlphaMapping::kSquared;
     charlie.sampling =
         "SAMPLE_TEXTURE2D_LOD(_PreIntegratedFGD_CharlieAndFabric, s_linear_clamp_sampler, "
         "float2(NdotV, perceptualRoughness), 0).xyz";

@@ -24,7 +24,7 @@ const Preset &UnrealPreset() {
     t.format = "png16";
     t.axes = {CentresAxis("mu", 128), CentresAxis("roughness", 32)};
     t.channels = {{"A"}, {"B"}};
-    t.model.visibility = PresetVisibility::kSmithJointApprox;
+    t.model.fitted = FittedVisibility::kSmithJointApprox;
     t.sampling =
         "PreIntegratedGF.SampleLevel(PreIntegratedGFSampler, float2(NoV, Roughness), 0).rg";
     t.source =

@@ -20,7 +20,9 @@
 #include <vector>
 
 #include "lutbake/core/cancellation.h"
+#include "lutbake/integrators/albedo_quadrature.h"
 #include "lutbake/models/sheen.h"
+#include "lutbake/models/smith.h"
 #include "lutbake/tables/bake_estimate.h"
 #include "lutbake/tables/settings.h"
 #include "lutbake/tables/storage.h"
@@ -70,21 +72,19 @@ struct PresetAxis {
   double Quantity(int i) const;
 };
 
-// The microfacet G an engine integrates its split sum with.
-//   kCorrelated  height-correlated Smith, 1 / (1 + Lambda_o + Lambda_i)
-//   kSeparable   separable Smith G1(o) G1(i)
-//   kSchlickGgx  Schlick-GGX with k = alpha / 2, separable (UE4 school)
-//   kSmithJointApprox  Unreal's Vis_SmithJointApprox (albedo_quadrature.h)
-enum class PresetVisibility { kCorrelated, kSeparable, kSchlickGgx, kSmithJointApprox };
-const char *ToString(PresetVisibility visibility);
-
-// alpha from the engine's roughness q: q^2 (perceptual roughness) or q.
-enum class PresetAlpha { kSquared, kLinear };
-const char *ToString(PresetAlpha alpha);
-
+// The model an engine integrates its channels with, in the models' and
+// tables' own terms: a channel reads its table (TableNamed) under
+// TableSettings(), at alpha from the roughness axis through `alpha`.
 struct PresetModel {
-  PresetVisibility visibility = PresetVisibility::kCorrelated;
-  PresetAlpha alpha = PresetAlpha::kSquared;
+  // The microfacet G2: Smith's in the form `smith` (tables dfg, f82, Eavg,
+  // glass_*, spec_*), unless `fitted` names an engine's fitted G2 in its
+  // place (albedo_quadrature.h: Schlick-GGX with k = alpha / 2, the UE4
+  // school; Unreal's Vis_SmithJointApprox), which the split-sum channels
+  // integrate through IntegrateFittedSplitSumQuadrature.
+  SmithForm smith = SmithForm::kCorrelated;
+  FittedVisibility fitted = FittedVisibility::kNone;
+  // alpha from the engine's roughness q: q^2 (perceptual roughness) or q.
+  AlphaMapping alpha = AlphaMapping::kSquared;
   double alphaMin = 0.0;  // alpha = max(alpha, alphaMin): an engine's clamp
   // |eta - 1| below this: the engine treats the interface as absent (no
   // rough lobe, light passes straight through), so the glass channels hold
@@ -92,11 +92,21 @@ struct PresetModel {
   // 1e-4f). 0: none; the glass albedo at eta = 1 is then lutbake's
   // microfacet value G2(o, -o) / G1(o).
   double unitEtaWindow = 0.0;
-  // The Charlie sheen channel (meaning "sheen_E"): its visibility and alpha.
+  // The Charlie sheen channel (table sheen_E): its visibility and alpha.
   SheenVisibility sheenVisibility = SheenVisibility::kCharlie;
-  PresetAlpha sheenAlpha = PresetAlpha::kLinear;
+  AlphaMapping sheenAlpha = AlphaMapping::kLinear;
   double sheenAlphaMin = 0.0;  // sheen_E at alpha = max(alpha, sheenAlphaMin)
+
+  // The settings the channels' tables are evaluated under: smith,
+  // sheenVisibility and sheenAlpha (the rest their defaults).
+  BakeSettings TableSettings() const;
 };
+
+// What preset.json says of a model: "smith-correlated", "smith-separable",
+// "schlick-ggx k = alpha / 2", "smith-joint-approx a = alpha"; "alpha =
+// roughness^2", "alpha = roughness".
+std::string DescribeVisibility(const PresetModel &model);
+const char *DescribeAlpha(AlphaMapping alpha);
 
 // A channel: stored = scale * meaning + offset, meaning one of
 //   "A", "B"    the split-sum terms: int f (1 - (1 - v.h)^5) cos and

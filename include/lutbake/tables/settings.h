@@ -90,12 +90,19 @@ inline constexpr uint64_t kDefaultMaxSamples = uint64_t{1} << 26;
 // Default tolerance of the adaptive quadrature outside tolerance runs.
 inline constexpr double kQuadratureDefaultTolerance = 1e-12;
 
-// How the roughness axis r of the sheen tables (glTF's sheenRoughness) maps
-// to the Charlie NDF's alpha: linear alpha = r, squared alpha = r^2.
-enum class SheenAlpha { kLinear, kSquared };
+// How a roughness parameter r gives an NDF's alpha: linear alpha = r,
+// squared alpha = r^2 (perceptual roughness). The sheen tables' roughness
+// axis (glTF's sheenRoughness) takes either (BakeSettings::sheenAlpha); an
+// engine preset states its own for each lobe (presets/preset.h, PresetModel).
+enum class AlphaMapping { kLinear, kSquared };
+// The sheen tables' option by its older name.
+using SheenAlpha = AlphaMapping;
+constexpr double AlphaFromRoughness(AlphaMapping mapping, double r) {
+  return mapping == AlphaMapping::kSquared ? r * r : r;
+}
 // "linear", "squared".
-std::string_view ToString(SheenAlpha mapping);
-bool ParseSheenAlpha(std::string_view text, SheenAlpha *mapping);
+std::string_view ToString(AlphaMapping mapping);
+bool ParseSheenAlpha(std::string_view text, AlphaMapping *mapping);
 
 struct BakeSettings {
   NdfKind ndf = NdfKind::kGgx;
