@@ -41,6 +41,8 @@
 #include "lutbake/integrators/albedo_quadrature.h"
 #include "lutbake/integrators/ltc_fit.h"
 #include "lutbake/models/sheen.h"
+#include "lutbake/tables/lookup.h"
+#include "lutbake/validation/ltc_report.h"
 
 using namespace lutbake;
 
@@ -68,20 +70,13 @@ std::vector<float> ReadArray(const std::string &text, const std::string &name) {
   return out;
 }
 
-// three.js's bilinear fetch of channel c at texel coordinates (x, y) =
-// uv * 64 - 0.5, clamped to the edge.
-double Bilinear(const std::vector<float> &tex, int size, double x, double y, int c) {
-  x = std::min(std::max(x, 0.0), size - 1.0);
-  y = std::min(std::max(y, 0.0), size - 1.0);
-  const int x0 = std::min(static_cast<int>(x), size - 2),
-            y0 = std::min(static_cast<int>(y), size - 2);
-  const double fx = x - x0, fy = y - y0;
-  auto at = [&](int i, int j) {
-    return static_cast<double>(tex[(static_cast<size_t>(i) * size + j) * 4 + c]);
-  };
-  return (1 - fy) * ((1 - fx) * at(y0, x0) + fx * at(y0, x0 + 1)) +
-         fy * ((1 - fx) * at(y0 + 1, x0) + fx * at(y0 + 1, x0 + 1));
+// M^-1 of a texture in three.js's layout (ThreejsLtcTexture) as three.js
+// samples it at (r, sqrt(1 - mu)), and its magnitude there.
+LtcMatrix FetchMatrix(const Table &texture, double r, double v) {
+  return {Lookup(texture, r, v, 0), Lookup(texture, r, v, 1), Lookup(texture, r, v, 2),
+          Lookup(texture, r, v, 3)};
 }
+double FetchMagnitude(const Table &texture, double r, double v) { return Lookup(texture, r, v, 4); }
 
 struct Summary {
   double meanLobe = 0, maxLobe = 0, meanPolygon = 0, maxPolygon = 0, meanLeakage = 0,
@@ -159,6 +154,7 @@ int main(int argc, char **argv) {
       std::fprintf(stderr, "--points needs ltc_code's table (three.js's module)\n");
       return 1;
     }
+    const Table theirTexture = ThreejsLtcTexture(mat1, mat2);
     std::vector<double> centres;
     for (int i = 0; i < size; ++i) centres.push_back((i + 0.5) / size);
     std::vector<double> mus(points), rs(points);
@@ -182,10 +178,9 @@ int main(int argc, char **argv) {
       const std::vector<double> refs = RectangleLobeIntegrals(lobe, mu, 1);
       const LtcTexel t = FitLtcPoint(lobeAt, mu, r, centres, centres, fit);
       ours[k] = MeasureLtcErrors(lobe, mu, magnitude, t.minv, refs);
-      const double x = r * (size - 1), y = std::sqrt(1.0 - mu) * (size - 1);
-      const LtcMatrix m{Bilinear(mat1, size, x, y, 0), Bilinear(mat1, size, x, y, 1),
-                        Bilinear(mat1, size, x, y, 2), Bilinear(mat1, size, x, y, 3)};
-      theirs[k] = MeasureLtcErrors(lobe, mu, magnitude, Bilinear(mat2, size, x, y, 0), m, refs);
+      const double v = std::sqrt(1.0 - mu);
+      theirs[k] = MeasureLtcErrors(lobe, mu, magnitude, FetchMagnitude(theirTexture, r, v),
+                                   FetchMatrix(theirTexture, r, v), refs);
     });
     const Summary so = Summarise(ours), st = Summarise(theirs);
     Print("lutbake eval (fitted at the point)", so);
@@ -270,6 +265,7 @@ int main(int argc, char **argv) {
     std::printf("measuring the shipped module %s\n", shippedPath.c_str());
   }
   const size_t count = static_cast<size_t>(size) * size;
+  const Table theirTexture = mat1.empty() ? Table{} : ThreejsLtcTexture(mat1, mat2);
   std::vector<LtcErrors> ours(count), theirs(count), theirsExact(count);
   const auto t1 = std::chrono::steady_clock::now();
   tbb::parallel_for(size_t{0}, count, [&](size_t k) {
@@ -279,10 +275,9 @@ int main(int argc, char **argv) {
     const std::vector<double> refs = RectangleLobeIntegrals(lobe, mu, 1);
     ours[k] = MeasureLtcErrors(lobe, mu, table.magnitude[k], table.Matrix(k), refs);
     if (!mat1.empty()) {
-      const double x = r * (size - 1), y = std::sqrt(1.0 - mu) * (size - 1);
-      const LtcMatrix m{Bilinear(mat1, size, x, y, 0), Bilinear(mat1, size, x, y, 1),
-                        Bilinear(mat1, size, x, y, 2), Bilinear(mat1, size, x, y, 3)};
-      const double magnitude = Bilinear(mat2, size, x, y, 0);
+      const double v = std::sqrt(1.0 - mu);
+      const LtcMatrix m = FetchMatrix(theirTexture, r, v);
+      const double magnitude = FetchMagnitude(theirTexture, r, v);
       theirs[k] = MeasureLtcErrors(lobe, mu, table.magnitude[k], magnitude, m, refs);
       theirsExact[k] = MeasureLtcErrors(lobe, mu, table.magnitude[k], m, refs);
     }
@@ -332,6 +327,7 @@ int main(int argc, char **argv) {
       for (int c = 0; c < 4; ++c) oursTex1[k * 4 + c] = static_cast<float>(v1[c]);
       oursTex2[k * 4] = static_cast<float>(table.magnitude[k]);
     }
+    const Table oursTexture = ThreejsLtcTexture(oursTex1, oursTex2);
     std::vector<double> midOurs(static_cast<size_t>(cells) * cells),
         midTheirs(static_cast<size_t>(cells) * cells);
     tbb::parallel_for(size_t{0}, midOurs.size(), [&](size_t k) {
@@ -340,13 +336,12 @@ int main(int argc, char **argv) {
       const LtcLobe lobe = lobeAt(r);
       double magnitude = 0, fresnel = 0;
       lobe.moments(mu, &magnitude, &fresnel);
-      auto error = [&](const std::vector<float> &t1, const std::vector<float> &t2) {
-        const LtcMatrix m{Bilinear(t1, size, x, y, 0), Bilinear(t1, size, x, y, 1),
-                          Bilinear(t1, size, x, y, 2), Bilinear(t1, size, x, y, 3)};
-        return LtcLobeError(lobe, mu, magnitude, Bilinear(t2, size, x, y, 0), m, 1);
+      auto error = [&](const Table &texture) {
+        return LtcLobeError(lobe, mu, magnitude, FetchMagnitude(texture, r, v),
+                            FetchMatrix(texture, r, v), 1);
       };
-      midOurs[k] = error(oursTex1, oursTex2);
-      midTheirs[k] = error(mat1, mat2);
+      midOurs[k] = error(oursTexture);
+      midTheirs[k] = error(theirTexture);
     });
     double meanOurs = 0, meanTheirs = 0, worst = -1e300;
     int worse = 0;

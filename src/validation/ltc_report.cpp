@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 #include "lutbake/formats/table_reader.h"
 #include "lutbake/integrators/ltc_fit.h"
@@ -18,21 +19,6 @@ namespace {
 
 // ltc_code's published table: 64 x 64 texels of 4 numbers in each array.
 constexpr int kReferenceSize = 64;
-
-// three.js's bilinear fetch (LinearFilter, ClampToEdgeWrapping) of channel
-// c at texel coordinates (x, y) = uv * 64 - 0.5.
-double ThreejsBilinear(const std::vector<float> &texture, double x, double y, int c) {
-  const int n = kReferenceSize;
-  x = std::clamp(x, 0.0, n - 1.0);
-  y = std::clamp(y, 0.0, n - 1.0);
-  const int x0 = std::min(static_cast<int>(x), n - 2), y0 = std::min(static_cast<int>(y), n - 2);
-  const double fx = x - x0, fy = y - y0;
-  const auto at = [&](int i, int j) {
-    return static_cast<double>(texture[(static_cast<size_t>(j) * n + i) * 4 + c]);
-  };
-  return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) +
-         fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
-}
 
 void Summarise(const std::vector<double> &errors, double *mean, double *max) {
   double sum = 0.0;
@@ -65,6 +51,28 @@ constexpr double kLogMin = -3.0, kLogMax = 0.0;
 
 }  // namespace
 
+Table ThreejsLtcTexture(const std::vector<float> &mat1, const std::vector<float> &mat2) {
+  const int n = kReferenceSize;
+  const size_t texels = static_cast<size_t>(n) * n;
+  if (mat1.size() != texels * 4 || mat2.size() != texels * 4)
+    throw std::invalid_argument("ltc_code's LTC_MAT_1 and LTC_MAT_2 hold 64 x 64 x 4 numbers each");
+  // Texel i at i / (n - 1): the linear axis whose texel centres those are.
+  const double h = 0.5 / (n - 1);
+  Table table;
+  table.name = "ltc_code";
+  table.x = LinearAxis("perceptualRoughness", -h, 1.0 + h, n);
+  table.y = LinearAxis("sqrt(1 - mu)", -h, 1.0 + h, n);
+  table.channels = 5;
+  table.channelNames = {"m00", "m20", "m02", "m22", "magnitude"};
+  table.values.resize(texels * 5);
+  for (size_t t = 0; t < texels; ++t) {
+    for (size_t c = 0; c < 4; ++c) table.values[t * 5 + c] = mat1[t * 4 + c];
+    table.values[t * 5 + 4] = mat2[t * 4];
+  }
+  table.errors.assign(table.values.size(), 0.0);
+  return table;
+}
+
 LtcErrorMap MeasureLtcErrorMap(const Table &ltc, NdfKind ndf, SmithForm smith,
                                const std::string &referencePath, int grid) {
   LtcErrorMap map;
@@ -73,11 +81,10 @@ LtcErrorMap MeasureLtcErrorMap(const Table &ltc, NdfKind ndf, SmithForm smith,
   map.smith = smith;
   map.reference = referencePath;
   const size_t texels = static_cast<size_t>(kReferenceSize) * kReferenceSize * 4;
-  std::vector<float> mat1, mat2;
-  if (!referencePath.empty()) {
-    mat1 = ReadThreejsLtcArray(referencePath, "LTC_MAT_1", texels);
-    mat2 = ReadThreejsLtcArray(referencePath, "LTC_MAT_2", texels);
-  }
+  Table theirTable;
+  if (!referencePath.empty())
+    theirTable = ThreejsLtcTexture(ReadThreejsLtcArray(referencePath, "LTC_MAT_1", texels),
+                                   ReadThreejsLtcArray(referencePath, "LTC_MAT_2", texels));
   const size_t points = static_cast<size_t>(grid) * grid;
   map.ours.assign(points, 0.0);
   if (!referencePath.empty()) map.theirs.assign(points, 0.0);
@@ -92,11 +99,11 @@ LtcErrorMap MeasureLtcErrorMap(const Table &ltc, NdfKind ndf, SmithForm smith,
     const LtcMatrix ours{Lookup(ltc, mu, r, 0), Lookup(ltc, mu, r, 1), Lookup(ltc, mu, r, 2),
                          Lookup(ltc, mu, r, 3)};
     map.ours[k] = LtcLobeError(lobe, mu, magnitude, Lookup(ltc, mu, r, 4), ours, 1);
-    if (mat1.empty()) return;
-    const double x = r * (kReferenceSize - 1), y = std::sqrt(1.0 - mu) * (kReferenceSize - 1);
-    const LtcMatrix theirs{ThreejsBilinear(mat1, x, y, 0), ThreejsBilinear(mat1, x, y, 1),
-                           ThreejsBilinear(mat1, x, y, 2), ThreejsBilinear(mat1, x, y, 3)};
-    map.theirs[k] = LtcLobeError(lobe, mu, magnitude, ThreejsBilinear(mat2, x, y, 0), theirs, 1);
+    if (referencePath.empty()) return;
+    const double x = r, y = std::sqrt(1.0 - mu);
+    const LtcMatrix theirs{Lookup(theirTable, x, y, 0), Lookup(theirTable, x, y, 1),
+                           Lookup(theirTable, x, y, 2), Lookup(theirTable, x, y, 3)};
+    map.theirs[k] = LtcLobeError(lobe, mu, magnitude, Lookup(theirTable, x, y, 4), theirs, 1);
   });
   Summarise(map.ours, &map.meanOurs, &map.maxOurs);
   Summarise(map.theirs, &map.meanTheirs, &map.maxTheirs);

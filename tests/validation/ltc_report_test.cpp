@@ -11,6 +11,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "lutbake/api/report.h"
 #include "lutbake/core/error.h"
@@ -18,6 +21,7 @@
 #include "lutbake/integrators/ltc_fit.h"
 #include "lutbake/models/ltc.h"
 #include "lutbake/tables/bake.h"
+#include "lutbake/tables/lookup.h"
 #include "support/cli_run.h"
 
 namespace lutbake {
@@ -73,6 +77,42 @@ TEST(LtcReport, TheFittedTableBeatsThePlainCosineAtEveryRoughPoint) {
   lobe.moments(mu, &magnitude, &fresnel);
   EXPECT_NEAR(map.theirs[3 * 8 + 2], LtcLobeError(lobe, mu, magnitude, 1.0, LtcMatrix{}, 1), 1e-12);
   fs::remove_all(module.parent_path());
+}
+
+// ltc_code's table read as three.js reads it: texel (i, j) at (r, sqrt(1 -
+// mu)) = (i, j) / 63, bilinear between, clamped at the edges. Texels that
+// hold the bilinear function (1 + 2 i + 3 j + i j / 2) (c + 1) (exact in
+// float) make the lookup that function of (x, y) = 63 (r, sqrt(1 - mu))
+// clamped to [0, 63] exactly (bilinear interpolation reproduces a bilinear
+// function), up to the rounding of the coordinates.
+TEST(LtcReport, ThreejsTextureIsLookedUpAsThreejsSamplesIt) {
+  std::vector<float> mat1(64 * 64 * 4), mat2(64 * 64 * 4, -7.0f);
+  const auto f = [](double x, double y, int c) {
+    return (1 + 2 * x + 3 * y + 0.5 * x * y) * (c + 1);
+  };
+  for (int j = 0; j < 64; ++j)
+    for (int i = 0; i < 64; ++i) {
+      const size_t at = (static_cast<size_t>(j) * 64 + i) * 4;
+      for (int c = 0; c < 4; ++c) mat1[at + c] = static_cast<float>(f(i, j, c));
+      mat2[at] = static_cast<float>(f(i, j, 4));
+    }
+  const Table t = ThreejsLtcTexture(mat1, mat2);
+  ASSERT_EQ(t.channels, 5);
+  for (const auto &[r, s] : std::vector<std::pair<double, double>>{{0.0, 0.0},
+                                                                   {1.0, 1.0},
+                                                                   {5.0 / 63, 40.0 / 63},
+                                                                   {0.123, 0.877},
+                                                                   {0.5, 0.25},
+                                                                   {-0.1, 0.3},
+                                                                   {0.7, 1.2},
+                                                                   {0.999, 0.001}}) {
+    const double x = std::clamp(63.0 * r, 0.0, 63.0), y = std::clamp(63.0 * s, 0.0, 63.0);
+    for (int c = 0; c < 5; ++c)
+      EXPECT_NEAR(Lookup(t, r, s, c), f(x, y, c), 1e-11 * f(x, y, c))
+          << r << ", " << s << ", " << c;
+  }
+  mat2.pop_back();
+  EXPECT_THROW(ThreejsLtcTexture(mat1, mat2), std::invalid_argument);
 }
 
 TEST(LtcReport, FilesHoldEveryPoint) {

@@ -27,6 +27,16 @@ struct LtcErrorMap {
   double meanOurs = 0, maxOurs = 0, meanTheirs = 0, maxTheirs = 0;
 };
 
+// ltc_code's table as three.js samples it, for Lookup (tables/lookup.h):
+// 64 x 64 texels, x = r and y = sqrt(1 - mu), texel i at i / 63 (each axis
+// the linear one over [-0.5/63, 1 + 0.5/63], whose texel centres those
+// are), so that Lookup(table, r, sqrt(1 - mu), c) is three.js's bilinear,
+// edge-clamped fetch at uv = (r, sqrt(1 - mu)) * 63/64 + 0.5/64. Channels
+// m00, m20, m02, m22 from LTC_MAT_1's four, magnitude from LTC_MAT_2's
+// first; texel (i, j) of each array at (j * 64 + i) * 4. Throws
+// std::invalid_argument unless both hold 64 x 64 x 4 numbers.
+Table ThreejsLtcTexture(const std::vector<float> &mat1, const std::vector<float> &mat2);
+
 // `ltc`: a baked ltc_ggx table of the model (ndf, smith). referencePath:
 // three.js's module with ltc_code's LTC_MAT_1 / LTC_MAT_2 (64 x 64 x 4
 // numbers each), or empty. Throws IoError when the reference cannot be read.
