@@ -17,6 +17,7 @@
 #include "bake_internal.h"
 #include "lutbake/api/names.h"
 #include "lutbake/core/error.h"
+#include "lutbake/tables/bake.h"
 
 namespace lutbake {
 
@@ -220,15 +221,10 @@ EvalResult Evaluate(const EvalRequest &r) {
   }
 
   result.channelMeanings = table.ChannelMeanings();
-  if (settings.estimator == Estimator::kQuadrature || !table.Sampled()) {
-    result.method = table.QuadratureDescription(settings);
+  result.method = DescribeEstimator(table, settings);
+  if (IsQuadrature(settings.estimator) || !table.Sampled())
     if (const std::string bound = table.QuadratureBound(settings); !bound.empty())
       result.method += "; error: " + bound;
-  } else {
-    result.method = std::string(ToString(settings.estimator)) + " sampling";
-    if (const std::string note = table.SamplerNote(settings); !note.empty())
-      result.method += "; " + note;
-  }
   const int channels = table.Channels();
   for (size_t i = 0; i < at.size(); ++i) {
     const PointValue &v = pointValues[i];

@@ -88,6 +88,19 @@ PointValue EvaluateTexel(const TableDefinition &definition, const BakeSettings &
                       : definition.Evaluate(s, x, y);
 }
 
+std::string DescribeEstimator(const TableDefinition &definition, const BakeSettings &s) {
+  if (!definition.Sampled() || IsQuadrature(s.estimator))
+    return definition.QuadratureDescription(s);
+  const bool random = PointSetOf(s.estimator) == PointSet::kIndependentRandom;
+  std::string text =
+      std::string(ToString(s.estimator)) +
+      (random ? " with independent random points" : " with Owen-scrambled Sobol points");
+  if (const std::string note = definition.SamplerNote(s); !note.empty()) text += "; " + note;
+  if (s.tolerance > 0.0 && s.allowQuadratureSwitch)
+    text += "; texels for which the quadrature is cheaper switch to it";
+  return text;
+}
+
 Table BakeTable(const TableDefinition &definition, const BakeSettings &s,
                 const ProgressFn &progress, BakeStats *statsOut) {
   Axis x, y, z;
@@ -199,16 +212,7 @@ Table BakeTableOn(const TableDefinition &definition, const BakeSettings &s, cons
         "lookups interpolate linearly in that value between neighbouring texels";
   m.emplace_back("texelConvention", convention);
   m.emplace_back("channelLayout", definition.ChannelLayout());
-  std::string estimatorText = definition.QuadratureDescription(s);
-  if (sampled)
-    estimatorText =
-        std::string(ToString(s.estimator)) +
-        (random ? " with independent random points" : " with Owen-scrambled Sobol points");
-  if (sampled && !definition.SamplerNote(s).empty())
-    estimatorText += "; " + definition.SamplerNote(s);
-  if (tolerance && s.allowQuadratureSwitch)
-    estimatorText += "; texels for which the quadrature is cheaper switch to it";
-  m.emplace_back("estimator", estimatorText);
+  m.emplace_back("estimator", DescribeEstimator(definition, s));
   m.emplace_back("tolerance",
                  !albedo             ? "none"
                  : s.tolerance > 0.0 ? FormatDouble(s.tolerance)

@@ -158,7 +158,8 @@ TEST(Eval, VerboseSaysHowTheValuesAreMade) {
   for (const Case &c :
        {Case{"--table E --mu 0.5 --roughness 0.3", "lutbake eval: panel Gauss-Legendre quadrature"},
         Case{"--table burley_E --mu 0.5 --roughness 0.3", "lutbake eval: closed form: "},
-        Case{"--table E --mu 0.5 --roughness 0.3 --samples 64", "lutbake eval: vndf sampling"}}) {
+        Case{"--table E --mu 0.5 --roughness 0.3 --samples 64",
+             "lutbake eval: vndf with Owen-scrambled Sobol points"}}) {
     const test::CommandResult run = Lutbake("eval -v " + std::string(c.options));
     ASSERT_EQ(run.status, 0) << run.output;
     EXPECT_EQ(run.output.rfind(c.method, 0), 0u) << run.output;

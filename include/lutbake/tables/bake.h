@@ -59,6 +59,16 @@ Table BakeTableOn(const TableDefinition &table, const BakeSettings &settings, co
                   const Axis &y, const Axis &z, const ProgressFn &progress = {},
                   BakeStats *stats = nullptr);
 
+// How the values of `definition` are made under `settings`, in words (the
+// metadata "estimator" of a baked table, eval's method): the deterministic
+// integrator's description (QuadratureDescription) for a table that is not
+// sampled or under the quadratures; else the sampler, "vndf with
+// Owen-scrambled Sobol points" or "... with independent random points", then
+// its SamplerNote, and in a tolerance run that may switch (settings.
+// allowQuadratureSwitch), that texels for which the quadrature is cheaper
+// switch to it.
+std::string DescribeEstimator(const TableDefinition &definition, const BakeSettings &settings);
+
 // The value of a table's texel (ix, iy, iz) on its axes, with the settings'
 // estimator: Evaluate at the texel centres, or Evaluate3D for a 3D table.
 PointValue EvaluateTexel(const TableDefinition &definition, const BakeSettings &settings,
