@@ -1,10 +1,12 @@
-// The checks every LTC table of a diffuse lobe passes (ltc_burley_test.cpp,
-// ltc_oren_nayar_test.cpp call them with their table): magnitude is the
-// albedo table's value and bound bit for bit, fresnel within its bound of
-// the nested adaptive Gauss-Kronrod reference; det M^-1 > 0, finite,
+// The checks every LTC table passes (ltc_ggx_test.cpp, ltc_sheen_test.cpp,
+// ltc_burley_test.cpp, ltc_oren_nayar_test.cpp call them with their table):
 // bit-identical for 1 and 2 threads, eval at a texel centre is the bake's
 // texel, the stated lobe error against the next level of its rule, check
-// passes and catches a texel pushed off its branch and a changed magnitude.
+// passes and catches a texel pushed off its branch, a negative determinant
+// and a changed magnitude. For the diffuse lobes also: magnitude is the
+// albedo table's value and bound bit for bit, fresnel within its bound of
+// the nested adaptive Gauss-Kronrod reference, det M^-1 > 0, finite (the
+// microfacet and sheen tables check theirs against their own references).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -31,9 +33,18 @@ struct LtcLobeTable {
   const char *name;    // "ltc_burley"
   const char *albedo;  // its magnitude's table: "burley_E"
   std::function<LtcLobe(double y)> lobeAt;
-  // What the fit reaches at 10 x 10 (each measured at 64 x 64 in the test
-  // file): the lobe error and leakage at every texel, the mean lobe error.
+  // What the fit reaches on the grid the test bakes (each measured at 64 x
+  // 64 in the test file): the lobe error and leakage at every texel, the
+  // mean lobe error.
   double lobeErrorMax, leakageMax, lobeErrorMean;
+  // The stated lobe error and the next level's at most this apart, compared
+  // at every strideX-th texel of every strideY-th row (the rest for cost).
+  double levelDifferenceMax = 4e-4;
+  int strideX = 1, strideY = 1;
+  // The broken texel of the check: m20 and m02 negated (the mirrored
+  // branch), then moved by -mirrorShift and +mirrorShift (near the normal
+  // view both are small, and a bare mirror moves a diffuse lobe little).
+  double mirrorShift = 0.3;
 };
 
 inline BakeSettings LtcSized(int size) {
@@ -73,15 +84,15 @@ inline void ExpectMagnitudeAndFresnel(const LtcLobeTable &c, const Table &t) {
     }
 }
 
-inline void ExpectBitIdenticalForOneAndTwoThreads(const LtcLobeTable &c) {
+inline void ExpectBitIdenticalForOneAndTwoThreads(const LtcLobeTable &c, int size = 8) {
   Table one, two;
   {
     tbb::global_control control(tbb::global_control::max_allowed_parallelism, 1);
-    one = BakeTable(TableNamed(c.name), LtcSized(8));
+    one = BakeTable(TableNamed(c.name), LtcSized(size));
   }
   {
     tbb::global_control control(tbb::global_control::max_allowed_parallelism, 2);
-    two = BakeTable(TableNamed(c.name), LtcSized(8));
+    two = BakeTable(TableNamed(c.name), LtcSized(size));
   }
   ASSERT_EQ(one.values.size(), two.values.size());
   EXPECT_EQ(0, std::memcmp(one.values.data(), two.values.data(), one.values.size() * 8));
@@ -90,31 +101,37 @@ inline void ExpectBitIdenticalForOneAndTwoThreads(const LtcLobeTable &c) {
   EXPECT_EQ(0, std::memcmp(one.fitMaps.data(), two.fitMaps.data(), one.fitMaps.size() * 8));
 }
 
-inline void ExpectEvalAtTexelCentreIsTheBakesTexel(const LtcLobeTable &c, const Table &t) {
-  for (const auto &[ix, iy] : std::vector<std::pair<int, int>>{{0, 0}, {9, 9}, {3, 7}}) {
+inline void ExpectEvalAtTexelCentreIsTheBakesTexel(
+    const LtcLobeTable &c, const Table &t,
+    const std::vector<std::pair<int, int>> &texels = {{0, 0}, {9, 9}, {3, 7}}) {
+  for (const auto &[ix, iy] : texels) {
     const PointValue v =
         TableNamed(c.name).Evaluate(LtcSized(t.width()), t.x.TexelCenter(ix), t.y.TexelCenter(iy));
     for (int ch = 0; ch < 6; ++ch) EXPECT_EQ(v.value[ch], t.value(ix, iy, ch)) << ix << ", " << iy;
   }
 }
 
-// The stated lobe error (level 1 of the light-direction rule, the matrix as
-// stored) against level 2 (measured at 64 x 64: 3.6e-4 at worst, at grazing
-// views), and the fit's quality.
+// The stated lobe error (level 1 of the table's rule, the matrix as stored)
+// against level 2 (diffuse lobes, measured at 64 x 64: 3.6e-4 at worst, at
+// grazing views), the leakage map against the stored matrix's, and the
+// fit's quality.
 inline void ExpectStatedLobeErrorAgreesWithTheNextLevel(const LtcLobeTable &c, const Table &t) {
+  ASSERT_EQ(t.fitMapNames, (std::vector<std::string>{"lobeError", "polygonError", "leakage"}));
   double worstDifference = 0.0, mean = 0.0;
   for (int iy = 0; iy < t.height(); ++iy)
     for (int ix = 0; ix < t.width(); ++ix) {
       const size_t texel = static_cast<size_t>(iy) * t.width() + ix;
+      mean += t.fitMaps[texel * 3] / static_cast<double>(t.texelCount());
+      EXPECT_LT(t.fitMaps[texel * 3], c.lobeErrorMax);
+      EXPECT_LT(t.fitMaps[texel * 3 + 2], c.leakageMax);
+      if (iy % c.strideY != 0 || ix % c.strideX != 0) continue;
       const double m = static_cast<float>(t.value(ix, iy, 4));
       const double fine = LtcLobeError(c.lobeAt(t.y.TexelCenter(iy)), t.x.TexelCenter(ix), m, m,
                                        StoredLtcMatrix(t, ix, iy), 2);
       worstDifference = std::max(worstDifference, std::fabs(fine - t.fitMaps[texel * 3]));
-      mean += t.fitMaps[texel * 3] / static_cast<double>(t.texelCount());
-      EXPECT_LT(t.fitMaps[texel * 3], c.lobeErrorMax);
-      EXPECT_LT(t.fitMaps[texel * 3 + 2], c.leakageMax);
+      EXPECT_DOUBLE_EQ(t.fitMaps[texel * 3 + 2], LtcLeakage(StoredLtcMatrix(t, ix, iy)));
     }
-  EXPECT_LT(worstDifference, 4e-4);
+  EXPECT_LT(worstDifference, c.levelDifferenceMax);
   EXPECT_LT(mean, c.lobeErrorMean);
 }
 
@@ -126,8 +143,9 @@ inline const CheckResult *FindLtcCheck(const CheckReport &report, const std::str
 }
 
 // A bake of the table and its albedo table (lutbake::Bake, as `bake --tables
-// T,E --size 10 --format exr` makes it) passes check; a texel pushed off its
-// branch and a changed magnitude each fail it by name.
+// T,E --size 10 --format exr` makes it) passes check, and still does when
+// rewritten unchanged; a texel pushed off its branch, a negative
+// determinant and a changed magnitude each fail it by name.
 inline void ExpectCheckPassesAndCatchesBrokenTexels(const LtcLobeTable &c) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / (std::string("lutbake_check_") + c.name);
@@ -155,14 +173,23 @@ inline void ExpectCheckPassesAndCatchesBrokenTexels(const LtcLobeTable &c) {
     MakeExrWriter()->Write(t, (dir / (std::string(c.name) + ".exr")).string(), {});
     return CheckBakedSet(dir.string());
   };
-  // A texel pushed off its branch (m20 and m02 mirrored and shifted by 0.3:
-  // near the normal view both are small, and a bare mirror moves little).
-  const CheckReport mirrored = rewrite([](Table *t) {
-    t->values[t->index(4, 6, 1)] = -t->values[t->index(4, 6, 1)] - 0.3;
-    t->values[t->index(4, 6, 2)] = -t->values[t->index(4, 6, 2)] + 0.3;
+  // Unchanged, it still passes (the rewrite itself breaks nothing).
+  const CheckReport same = rewrite([](Table *) {});
+  ASSERT_NE(FindLtcCheck(same, c.name, "fit errors"), nullptr);
+  EXPECT_EQ(FindLtcCheck(same, c.name, "fit errors")->status, CheckStatus::kPass)
+      << FindLtcCheck(same, c.name, "fit errors")->detail;
+  EXPECT_EQ(FindLtcCheck(same, c.name, "texels")->status, CheckStatus::kPass);
+  // A texel pushed off its branch.
+  const CheckReport mirrored = rewrite([&c](Table *t) {
+    t->values[t->index(4, 6, 1)] = -t->values[t->index(4, 6, 1)] - c.mirrorShift;
+    t->values[t->index(4, 6, 2)] = -t->values[t->index(4, 6, 2)] + c.mirrorShift;
   });
+  ASSERT_NE(FindLtcCheck(mirrored, c.name, "no jumps"), nullptr);
   EXPECT_EQ(FindLtcCheck(mirrored, c.name, "no jumps")->status, CheckStatus::kFail);
   EXPECT_EQ(FindLtcCheck(mirrored, c.name, "fit errors")->status, CheckStatus::kFail);
+  const CheckReport negative =
+      rewrite([](Table *t) { t->values[t->index(2, 3, 0)] = -t->values[t->index(2, 3, 0)]; });
+  EXPECT_EQ(FindLtcCheck(negative, c.name, "fit usable")->status, CheckStatus::kFail);
   const CheckReport magnitude = rewrite([](Table *t) { t->values[t->index(5, 5, 4)] += 1e-4; });
   EXPECT_EQ(FindLtcCheck(magnitude, c.name, "texels")->status, CheckStatus::kFail);
   fs::remove_all(dir);

@@ -3,29 +3,20 @@
 // the adaptive Schlick-weighted reference; det M^-1 > 0, finite, bit-
 // identical for 1 and 2 threads, eval at a texel centre is the bake's texel,
 // the stated lobe error against the next level of its rule, check passes
-// and catches a mirrored texel and a changed magnitude.
+// and catches a mirrored texel, a negative determinant and a changed
+// magnitude (those shared with every LTC table: ltc_lobe_table_checks.h).
+// Calls the library, not the executable.
 #include <gtest/gtest.h>
-#include <tbb/global_control.h>
 
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <functional>
 #include <nlohmann/json.hpp>
 
-#include "lutbake/formats/table_reader.h"
-#include "lutbake/formats/writer.h"
-#include "lutbake/integrators/ltc_fit.h"
+#include "ltc_lobe_table_checks.h"
+#include "lutbake/api/eval.h"
 #include "lutbake/integrators/sheen_quadrature.h"
-#include "lutbake/tables/bake.h"
-#include "lutbake/tables/table_definition.h"
-#include "lutbake/validation/check.h"
-#include "support/cli_run.h"
 
 namespace lutbake {
 namespace {
-
-namespace fs = std::filesystem;
 
 const TableDefinition &Ltc() { return TableNamed("ltc_sheen"); }
 
@@ -43,6 +34,13 @@ const Table &Small() {
   static const Table table = BakeTable(Ltc(), Sized(10));
   return table;
 }
+
+// Charlie, alpha = r (the defaults the shared checks bake with).
+const test::LtcLobeTable kTable{
+    "ltc_sheen", "sheen_E", [](double r) { return SheenLtcLobe(SheenVisibility::kCharlie, r); },
+    0.45,        0.1,       0.2,
+    2e-3,        1,         1,
+    0.0};
 
 TEST(LtcSheen, ChannelsAxesAndOptions) {
   EXPECT_EQ(Ltc().ChannelNames(),
@@ -90,111 +88,39 @@ TEST(LtcSheen, MagnitudeIsSheenEAndFresnelWithinItsBound) {
 }
 
 TEST(LtcSheen, BitIdenticalForOneAndTwoThreads) {
-  Table one, two;
-  {
-    tbb::global_control c(tbb::global_control::max_allowed_parallelism, 1);
-    one = BakeTable(Ltc(), Sized(8));
-  }
-  {
-    tbb::global_control c(tbb::global_control::max_allowed_parallelism, 2);
-    two = BakeTable(Ltc(), Sized(8));
-  }
-  ASSERT_EQ(one.values.size(), two.values.size());
-  EXPECT_EQ(0, std::memcmp(one.values.data(), two.values.data(), one.values.size() * 8));
-  EXPECT_EQ(0, std::memcmp(one.errors.data(), two.errors.data(), one.errors.size() * 8));
-  ASSERT_EQ(one.fitMaps.size(), two.fitMaps.size());
-  EXPECT_EQ(0, std::memcmp(one.fitMaps.data(), two.fitMaps.data(), one.fitMaps.size() * 8));
+  test::ExpectBitIdenticalForOneAndTwoThreads(kTable);
 }
 
 TEST(LtcSheen, EvalAtTexelCentreIsTheBakesTexel) {
-  const Table &t = Small();
-  const BakeSettings s = Sized(10);
-  for (const auto &[ix, iy] : std::vector<std::pair<int, int>>{{0, 0}, {9, 9}, {3, 7}}) {
-    const PointValue v = Ltc().Evaluate(s, t.x.TexelCenter(ix), t.y.TexelCenter(iy));
-    for (int c = 0; c < 6; ++c) EXPECT_EQ(v.value[c], t.value(ix, iy, c)) << ix << ", " << iy;
-  }
+  test::ExpectEvalAtTexelCentreIsTheBakesTexel(kTable, Small());
 }
 
 // The stated lobe error (level 1 of the half-vector rule, the matrix as
-// stored) against level 2; the fit's quality on this grid (measured at 64
-// x 64, Charlie, alpha = r: lobe error mean 0.162, max 0.378; leakage max
-// 0.084).
+// stored) against level 2 (64 x 64: 4.8e-3 (alpha = r), 5.2e-3 (r^2), at r =
+// 1/128); the fit's quality on this grid (measured at 64 x 64, Charlie,
+// alpha = r: lobe error mean 0.162, max 0.378; leakage max 0.084).
 TEST(LtcSheen, StatedLobeErrorAgreesWithTheNextLevel) {
-  const Table &t = Small();
-  ASSERT_EQ(t.fitMapNames, (std::vector<std::string>{"lobeError", "polygonError", "leakage"}));
-  double worstDifference = 0.0, mean = 0.0;
-  for (int iy = 0; iy < t.height(); ++iy)
-    for (int ix = 0; ix < t.width(); ++ix) {
-      const size_t texel = static_cast<size_t>(iy) * t.width() + ix;
-      const double r = t.y.TexelCenter(iy), mu = t.x.TexelCenter(ix);
-      const auto f = [](double v) { return static_cast<double>(static_cast<float>(v)); };
-      const LtcMatrix stored{f(t.value(ix, iy, 0)), f(t.value(ix, iy, 1)), f(t.value(ix, iy, 2)),
-                             f(t.value(ix, iy, 3))};
-      const double m = f(t.value(ix, iy, 4));
-      const double fine =
-          LtcLobeError(SheenLtcLobe(SheenVisibility::kCharlie, r), mu, m, m, stored, 2);
-      worstDifference = std::max(worstDifference, std::fabs(fine - t.fitMaps[texel * 3]));
-      mean += t.fitMaps[texel * 3] / static_cast<double>(t.texelCount());
-      EXPECT_LT(t.fitMaps[texel * 3], 0.45);
-      EXPECT_LT(t.fitMaps[texel * 3 + 2], 0.1);
-      EXPECT_DOUBLE_EQ(t.fitMaps[texel * 3 + 2], LtcLeakage(stored));
-    }
-  EXPECT_LT(worstDifference, 2e-3);  // 64 x 64: 4.8e-3 (alpha = r), 5.2e-3 (r^2), at r = 1/128
-  EXPECT_LT(mean, 0.2);
-}
-
-const CheckResult *Find(const CheckReport &report, const std::string &check) {
-  for (const CheckResult &r : report.results)
-    if (r.subject == "ltc_sheen" && r.check == check) return &r;
-  return nullptr;
+  test::ExpectStatedLobeErrorAgreesWithTheNextLevel(kTable, Small());
 }
 
 // check on a bake of ltc_sheen and sheen_E: passes (magnitude = sheen_E
 // among its checks); a texel swapped for its mirrored branch fails "no
-// jumps", a changed magnitude fails "texels".
+// jumps", a negative determinant "fit usable", a changed magnitude "texels".
 TEST(LtcSheen, CheckPassesAndCatchesBrokenTexels) {
-  const fs::path dir = fs::temp_directory_path() / "lutbake_ltc_sheen_check";
-  fs::remove_all(dir);
-  const test::CommandResult run = test::Lutbake(
-      "bake --tables ltc_sheen,sheen_E --size 10 --format exr -q --out " + dir.string());
-  ASSERT_EQ(run.status, 0) << run.output;
-  const CheckReport good = CheckBakedSet(dir.string());
-  for (const CheckResult &r : good.results)
-    EXPECT_NE(r.status, CheckStatus::kFail) << r.subject << " " << r.check << ": " << r.detail;
-  for (const char *check : {"fit usable", "fit errors", "no jumps", "texels"})
-    EXPECT_NE(Find(good, check), nullptr) << check;
-  bool channel = false;
-  for (const CheckResult &r : good.results)
-    channel = channel || (r.subject == "ltc_sheen+sheen_E" && r.status == CheckStatus::kPass);
-  EXPECT_TRUE(channel);
-
-  const Table original = BakeTable(Ltc(), Sized(10));
-  const auto rewrite = [&](const std::function<void(Table *)> &change) {
-    Table t = original;
-    change(&t);
-    MakeExrWriter()->Write(t, (dir / "ltc_sheen.exr").string(), {});
-    return CheckBakedSet(dir.string());
-  };
-  const CheckReport mirrored = rewrite([](Table *t) {
-    t->values[t->index(4, 6, 1)] = -t->values[t->index(4, 6, 1)];
-    t->values[t->index(4, 6, 2)] = -t->values[t->index(4, 6, 2)];
-  });
-  ASSERT_NE(Find(mirrored, "no jumps"), nullptr);
-  EXPECT_EQ(Find(mirrored, "no jumps")->status, CheckStatus::kFail);
-  EXPECT_EQ(Find(mirrored, "fit errors")->status, CheckStatus::kFail);
-  const CheckReport magnitude = rewrite([](Table *t) { t->values[t->index(5, 5, 4)] += 1e-4; });
-  EXPECT_EQ(Find(magnitude, "texels")->status, CheckStatus::kFail);
-  fs::remove_all(dir);
+  test::ExpectCheckPassesAndCatchesBrokenTexels(kTable);
 }
 
-// eval --json with the model options prints the six channels.
+// eval --json with the model options (lutbake::Evaluate) prints the six
+// channels.
 TEST(LtcSheen, EvalJsonWithOptions) {
-  const test::CommandResult run = test::Lutbake(
-      "eval --table ltc_sheen --mu 0.4 --roughness 0.35 --sheen-visibility ashikhmin "
-      "--sheen-alpha squared --json",
-      true);
-  ASSERT_EQ(run.status, 0) << run.output;
-  const nlohmann::json line = nlohmann::json::parse(run.output);
+  EvalRequest request;
+  request.table = "ltc_sheen";
+  request.coordinates = {{"mu", {0.4}}, {"roughness", {0.35}}};
+  request.sheenVisibility = SheenVisibility::kAshikhmin;
+  request.sheenAlpha = SheenAlpha::kSquared;
+  const EvalResult result = Evaluate(request);
+  ASSERT_EQ(result.points.size(), 1u);
+  const nlohmann::json line = nlohmann::json::parse(result.JsonLine(0));
   ASSERT_EQ(line["value"].size(), 6u);
   const BakeSettings s = Sized(64, SheenVisibility::kAshikhmin, SheenAlpha::kSquared);
   const PointValue v = Ltc().Evaluate(s, 0.4, 0.35);
