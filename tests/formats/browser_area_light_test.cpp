@@ -41,6 +41,7 @@
 #include "support/cli_run.h"
 #include "support/headless_chromium.h"
 #include "support/ltc_area_light_reference.h"
+#include "support/webgl_page.h"
 
 namespace lutbake {
 namespace {
@@ -76,9 +77,6 @@ const char *kPage = R"(
     upload(0, gl.RGBA32F, gl.RGBA, sources.width, sources.height, sources.matrix, gl.LINEAR);
     upload(1, gl.RG32F, gl.RG, sources.width, sources.height, sources.moments, gl.LINEAR);
     upload(2, gl.RGBA32F, gl.RGBA, SIZE * TEXELS, SIZE, sources.cases, gl.NEAREST);
-    const vs = `#version 300 es
-      void main() { vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
-                    gl_Position = vec4(p, 0.0, 1.0); }`;
     const fs = `#version 300 es
 precision highp float;
 ${sources.glsl}
@@ -97,34 +95,8 @@ void main() {
       lutbake_rect_light_diffuse(N, V, p0, p1, p2, p3, true),
       lutbake_rect_light_ltc_ggx_f1(ltc_matrix, ltc_moments, N, V, r, p0, p1, p2, p3, false));
 }`;
-    const compile = (type, text) => {
-      const s = gl.createShader(type);
-      gl.shaderSource(s, text);
-      gl.compileShader(s);
-      if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) throw new Error(gl.getShaderInfoLog(s));
-      return s;
-    };
-    const program = gl.createProgram();
-    gl.attachShader(program, compile(gl.VERTEX_SHADER, vs));
-    gl.attachShader(program, compile(gl.FRAGMENT_SHADER, fs));
-    gl.linkProgram(program);
-    if (!gl.getProgramParameter(program, gl.LINK_STATUS)) throw new Error(gl.getProgramInfoLog(program));
-    gl.useProgram(program);
-    gl.uniform1i(gl.getUniformLocation(program, 'ltc_matrix'), 0);
-    gl.uniform1i(gl.getUniformLocation(program, 'ltc_moments'), 1);
-    gl.uniform1i(gl.getUniformLocation(program, 'cases'), 2);
-    const target = gl.createTexture();
-    gl.activeTexture(gl.TEXTURE3);
-    gl.bindTexture(gl.TEXTURE_2D, target);
-    gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA32F, SIZE, SIZE);
-    const fb = gl.createFramebuffer();
-    gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
-    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, target, 0);
-    gl.viewport(0, 0, SIZE, SIZE);
-    gl.drawArrays(gl.TRIANGLES, 0, 3);
-    const pixels = new Float32Array(SIZE * SIZE * 4);
-    gl.readPixels(0, 0, SIZE, SIZE, gl.RGBA, gl.FLOAT, pixels);
-    out.pixels = Array.from(pixels);
+    lutbakeProgram(gl, fs, { ltc_matrix: 0, ltc_moments: 1, cases: 2 });
+    out.pixels = lutbakeDrawPixels(gl, SIZE, 3, true);
     out.error = gl.getError();
   } catch (e) { out.exception = String(e && e.stack || e); }
   await fetch('http://127.0.0.1:LUTBAKE_RESULT_PORT/', { method: 'POST', body: JSON.stringify(out) });
@@ -200,7 +172,7 @@ TEST(BrowserAreaLight, WebGl2LightsRectanglesAsTheLtcIntegralAndTheQuadrature) {
   const std::string html =
       "<!doctype html><script type=\"module\">\nconst SIZE = " + std::to_string(kSize) +
       ", TEXELS = " + std::to_string(kTexelsPerCase) + ";\nconst sources = " + sources.dump() +
-      ";\n" + kPage + "</script>\n";
+      ";\n" + test::kWebGlPageHelpers + kPage + "</script>\n";
   std::string log;
   const std::string body =
       test::RunPage(d, html, "--use-angle=swiftshader --enable-unsafe-swiftshader", "", 120, &log);

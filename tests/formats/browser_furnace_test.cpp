@@ -44,6 +44,7 @@
 #include "support/bake_for_test.h"
 #include "support/cli_run.h"
 #include "support/headless_chromium.h"
+#include "support/webgl_page.h"
 
 namespace lutbake {
 namespace {
@@ -94,9 +95,6 @@ const char *kPage = R"(
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
     };
     upload(E.default, 0); upload(Eavg.default, 1); upload(dfg.default, 2);
-    const vs = `#version 300 es
-      void main() { vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
-                    gl_Position = vec4(p, 0.0, 1.0); }`;
     const fs = `#version 300 es
 precision highp float;
 ${sources.glsl}
@@ -117,34 +115,8 @@ void main() {
   color = vec4(white, tinted, lutbake_specular_albedo(AB, vec3(0.5), one).x,
                ms(vec3(0.5), E, Eavg).x);
 }`;
-    const compile = (type, text) => {
-      const s = gl.createShader(type);
-      gl.shaderSource(s, text);
-      gl.compileShader(s);
-      if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) throw new Error(gl.getShaderInfoLog(s));
-      return s;
-    };
-    const program = gl.createProgram();
-    gl.attachShader(program, compile(gl.VERTEX_SHADER, vs));
-    gl.attachShader(program, compile(gl.FRAGMENT_SHADER, fs));
-    gl.linkProgram(program);
-    if (!gl.getProgramParameter(program, gl.LINK_STATUS)) throw new Error(gl.getProgramInfoLog(program));
-    gl.useProgram(program);
-    gl.uniform1i(gl.getUniformLocation(program, 'E_tex'), 0);
-    gl.uniform1i(gl.getUniformLocation(program, 'Eavg_tex'), 1);
-    gl.uniform1i(gl.getUniformLocation(program, 'dfg_tex'), 2);
-    const target = gl.createTexture();
-    gl.activeTexture(gl.TEXTURE3);
-    gl.bindTexture(gl.TEXTURE_2D, target);
-    gl.texStorage2D(gl.TEXTURE_2D, 1, floatTarget ? gl.RGBA32F : gl.RGBA8, SIZE, SIZE);
-    const fb = gl.createFramebuffer();
-    gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
-    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, target, 0);
-    gl.viewport(0, 0, SIZE, SIZE);
-    gl.drawArrays(gl.TRIANGLES, 0, 3);
-    const pixels = floatTarget ? new Float32Array(SIZE * SIZE * 4) : new Uint8Array(SIZE * SIZE * 4);
-    gl.readPixels(0, 0, SIZE, SIZE, gl.RGBA, floatTarget ? gl.FLOAT : gl.UNSIGNED_BYTE, pixels);
-    out.pixels = Array.from(pixels, v => floatTarget ? v : v / 255);
+    lutbakeProgram(gl, fs, { E_tex: 0, Eavg_tex: 1, dfg_tex: 2 });
+    out.pixels = lutbakeDrawPixels(gl, SIZE, 3, floatTarget);
     out.error = gl.getError();
   } catch (e) { out.exception = String(e && e.stack || e); }
   await fetch('http://127.0.0.1:LUTBAKE_RESULT_PORT/', { method: 'POST', body: JSON.stringify(out) });
@@ -169,7 +141,8 @@ TEST(BrowserFurnace, WebGl2ShadesTheFurnaceFromTheEmittedModuleAndGlsl) {
                                   {"glsl", ReadText(d / "lutbake.glsl")}};
   const std::string html =
       "<!doctype html><script type=\"module\">\nconst SIZE = " + std::to_string(kSize) +
-      ";\nconst sources = " + sources.dump() + ";\n" + kPage + "</script>\n";
+      ";\nconst sources = " + sources.dump() + ";\n" + test::kWebGlPageHelpers + kPage +
+      "</script>\n";
   std::string log;
   const std::string body =
       test::RunPage(d, html, "--use-angle=swiftshader --enable-unsafe-swiftshader", "", 120, &log);
