@@ -47,6 +47,16 @@ const char *ToString(PresetVisibility visibility) {
   return "?";
 }
 
+const char *ToString(PresetLtcLobe lobe) {
+  switch (lobe) {
+    case PresetLtcLobe::kGgx: return "ggx";
+    case PresetLtcLobe::kBurley: return "burley (perceptual roughness sqrt(alpha))";
+    case PresetLtcLobe::kSheen: return "sheen (alpha)";
+    case PresetLtcLobe::kOrenNayar: return "oren-nayar qualitative (sigma = pi/2 alpha)";
+  }
+  return "?";
+}
+
 const char *ToString(PresetAlpha alpha) {
   return alpha == PresetAlpha::kSquared ? "alpha = roughness^2" : "alpha = roughness";
 }
@@ -89,7 +99,7 @@ struct Needs {
 
 bool IsLtcMatrixMeaning(const std::string &meaning) {
   return meaning == "ltc_m00" || meaning == "ltc_m20" || meaning == "ltc_m02" ||
-         meaning == "ltc_m22";
+         meaning == "ltc_m22" || meaning == "ltc_m11";
 }
 
 Needs NeedsOf(const PresetTexture &texture) {
@@ -225,29 +235,37 @@ double ClippedSphere(double z, double len) {
   return sum / kPi / len;
 }
 
+// The lobe of the model's ltcLobe at the engine's roughness q (PresetLtcLobe).
+LtcLobe PresetLtcLobeAt(const PresetModel &model, double q) {
+  const double alpha = AlphaOf(model.alpha, q, model.alphaMin);
+  switch (model.ltcLobe) {
+    case PresetLtcLobe::kBurley: return BurleyLtcLobe(std::sqrt(alpha));
+    case PresetLtcLobe::kSheen: return SheenLtcLobe(model.sheenVisibility, alpha);
+    case PresetLtcLobe::kOrenNayar:
+      return OrenNayarLtcLobe(OrenNayarVariant::kQualitative, 0.5 * kPi * alpha);
+    case PresetLtcLobe::kGgx: break;
+  }
+  const SmithForm smith = model.visibility == PresetVisibility::kSeparable ? SmithForm::kSeparable
+                                                                           : SmithForm::kCorrelated;
+  return MicrofacetLtcLobe(Ndf{NdfKind::kGgx, alpha}, smith);
+}
+
 // The LTC fits of a texture's (mu, roughness) grid, texel (i over the mu
 // axis, j over the roughness axis) at i * roughness count + j.
 std::vector<LtcTexel> FitPresetLtc(const PresetTexture &texture, int muAxis, int roughnessAxis) {
   const PresetModel &model = texture.model;
-  if (model.visibility != PresetVisibility::kCorrelated &&
+  if (model.ltcLobe == PresetLtcLobe::kGgx && model.visibility != PresetVisibility::kCorrelated &&
       model.visibility != PresetVisibility::kSeparable)
-    throw std::invalid_argument(texture.file + ": the LTC channels take an exact Smith form");
+    throw std::invalid_argument(texture.file + ": the GGX LTC channels take an exact Smith form");
   if (muAxis < 0) throw std::invalid_argument(texture.file + ": the LTC channels need a mu axis");
   const PresetAxis &ma = texture.axes[static_cast<size_t>(muAxis)];
   const PresetAxis &ra = texture.axes[static_cast<size_t>(roughnessAxis)];
   std::vector<double> mu, roughness;
   for (int i = 0; i < ma.count; ++i) mu.push_back(ma.Quantity(i));
   for (int j = 0; j < ra.count; ++j) roughness.push_back(ra.Quantity(j));
-  const SmithForm smith = model.visibility == PresetVisibility::kSeparable ? SmithForm::kSeparable
-                                                                           : SmithForm::kCorrelated;
   LtcFitSettings settings;
   settings.moments = false;  // the channels "E" and "B" integrate them
-  return FitLtcGrid(
-      [&](double q) {
-        return MicrofacetLtcLobe(Ndf{NdfKind::kGgx, AlphaOf(model.alpha, q, model.alphaMin)},
-                                 smith);
-      },
-      mu, roughness, settings);
+  return FitLtcGrid([&](double q) { return PresetLtcLobeAt(model, q); }, mu, roughness, settings);
 }
 
 struct AxisRoles {
@@ -385,10 +403,20 @@ void TexelChannels(const PresetTexture &texture, const Needs &needs, const AxisR
       const int count = texture.axes[static_cast<size_t>(roles.roughness)].count;
       const LtcMatrix &m =
           ltc[static_cast<size_t>(axisTexel(roles.mu)) * count + axisTexel(roles.roughness)].minv;
+      // Scaled so that m22 = 1 (HDRP): the fit's m22 > 0 (det M^-1 > 0
+      // and m11 = 1 do not give it; a texel without it is refused).
       value = channel.meaning == "ltc_m00"   ? m.m00
               : channel.meaning == "ltc_m20" ? m.m20
               : channel.meaning == "ltc_m02" ? m.m02
-                                             : m.m22;
+              : channel.meaning == "ltc_m22" ? m.m22
+                                             : 1.0;
+      if (model.ltcScale == PresetLtcScale::kUnitM22) {
+        if (!(m.m22 > 0.0))
+          throw std::runtime_error(texture.file + ": the fitted m22 is " + FormatDouble(m.m22) +
+                                   " at mu = " + FormatDouble(mu) + ", roughness = " +
+                                   FormatDouble(roughness) + ": M^-1 cannot be scaled to m22 = 1");
+        value /= m.m22;  // each entry over m22, correctly rounded
+      }
     } else if (channel.meaning == "clipped_sphere") {
       const double u = texture.axes[0].Coordinate(axisTexel(0));
       const double v = texture.axes.size() > 1 ? texture.axes[1].Coordinate(axisTexel(1)) : 0.0;
@@ -425,7 +453,9 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
   const AxisRoles roles = RolesOf(texture, needs);
 
   Table table;
-  table.name = texture.file.substr(0, texture.file.find('.'));
+  // The file's name without its extension ("LtcData.BRDF_GGX" of
+  // LtcData.BRDF_GGX.cs).
+  table.name = texture.file.substr(0, texture.file.rfind('.'));
   const auto tableAxis = [](const PresetAxis &axis, const char *name) {
     Axis out = LinearAxis(name, 0.0, 1.0, axis.count);
     if (axis.placement == TexelPlacement::kEdges && axis.count > 1) {

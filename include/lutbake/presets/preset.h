@@ -82,6 +82,21 @@ const char *ToString(PresetVisibility visibility);
 enum class PresetAlpha { kSquared, kLinear };
 const char *ToString(PresetAlpha alpha);
 
+// The lobe an LTC texture's matrix channels (ltc_*) are fitted to, its
+// parameter from alpha = AlphaOf(model alpha, roughness, alphaMin):
+//   kGgx        GGX at alpha with the model's Smith form (table ltc_ggx)
+//   kBurley     Burley's diffuse at perceptual roughness sqrt(alpha) (ltc_burley)
+//   kSheen      the sheen lobe at alpha, the model's sheenVisibility (ltc_sheen)
+//   kOrenNayar  the qualitative Oren-Nayar lobe at sigma = (pi / 2) alpha
+//               radians (ltc_oren_nayar; Unity HDRP's BRDF_OrenNayar mapping)
+enum class PresetLtcLobe { kGgx, kBurley, kSheen, kOrenNayar };
+const char *ToString(PresetLtcLobe lobe);
+
+// The scale of M^-1 (the LTC is the same for any positive multiple):
+//   kUnitM11  m11 = 1 (ltc_code, three.js, EEVEE, Babylon.js; the tables')
+//   kUnitM22  m22 = 1 (Unity HDRP's LtcData tables): every entry over m22
+enum class PresetLtcScale { kUnitM11, kUnitM22 };
+
 struct PresetModel {
   PresetVisibility visibility = PresetVisibility::kCorrelated;
   PresetAlpha alpha = PresetAlpha::kSquared;
@@ -96,6 +111,9 @@ struct PresetModel {
   SheenVisibility sheenVisibility = SheenVisibility::kCharlie;
   PresetAlpha sheenAlpha = PresetAlpha::kLinear;
   double sheenAlphaMin = 0.0;  // sheen_E at alpha = max(alpha, sheenAlphaMin)
+  // The LTC channels' lobe and the scale of their M^-1.
+  PresetLtcLobe ltcLobe = PresetLtcLobe::kGgx;
+  PresetLtcScale ltcScale = PresetLtcScale::kUnitM11;
 };
 
 // A channel: stored = scale * meaning + offset, meaning one of
@@ -123,11 +141,13 @@ struct PresetModel {
 //               axis itself), bilinear between its entries as the authors'
 //               renderer reads it; not integrated by lutbake, so with no
 //               bound of their own (a texel's bound is its storage's only)
-//   "ltc_m00", "ltc_m20", "ltc_m02", "ltc_m22"  the entries of M^-1 of the
-//               linearly transformed cosine of the GGX lobe (table ltc_ggx's
-//               channels; models/ltc.h), fitted over the texture's whole
-//               (mu, roughness) grid at once (integrators/ltc_fit.h,
-//               FitLtcGrid); exact Smith forms only
+//   "ltc_m00", "ltc_m20", "ltc_m02", "ltc_m22", "ltc_m11"  the entries of
+//               M^-1 of the linearly transformed cosine of the model's
+//               ltcLobe (GGX: table ltc_ggx's channels; models/ltc.h), fitted
+//               over the texture's whole (mu, roughness) grid at once
+//               (integrators/ltc_fit.h, FitLtcGrid), scaled as ltcScale
+//               says (ltc_m11 is 1 under kUnitM11); GGX with exact Smith
+//               forms only
 //   "clipped_sphere"  ltc_code's horizon-clipped sphere (LTC_2.w): the form
 //               factor of a spherical cap, clipped at the horizon, over its
 //               unclipped one |F|, at z = 2u - 1 (the cap's axis . n) and
