@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -434,6 +435,49 @@ void TexelChannels(const PresetTexture &texture, const Needs &needs, const AxisR
   }
 }
 
+// The seconds one texel of a texture with LTC channels costs in
+// BakePresetTexture: its fit as FitLtcGrid starts it, from the fit of its
+// neighbour one roughness step up (fitted first, untimed, from the texel
+// two steps up: a fit from the identity costs several times a warm one),
+// and its other channels as TexelChannels computes them. The lobe is built
+// once a roughness column in the bake: untimed.
+double SecondsOfLtcTexel(const PresetTexture &texture, const int index[3]) {
+  using Clock = std::chrono::steady_clock;
+  const Needs needs = NeedsOf(texture);
+  const AxisRoles roles = RolesOf(texture, needs);
+  if (texture.model.ltcLobe == PresetLtcLobe::kGgx &&
+      texture.model.visibility != PresetVisibility::kCorrelated &&
+      texture.model.visibility != PresetVisibility::kSeparable)
+    throw std::invalid_argument(texture.file + ": the GGX LTC channels take an exact Smith form");
+  const PresetAxis &ma = texture.axes[static_cast<size_t>(roles.mu)];
+  const PresetAxis &ra = texture.axes[static_cast<size_t>(roles.roughness)];
+  const int i = index[roles.mu], j = index[roles.roughness];
+  // The texels above in roughness (Quantity clamps an index past the end).
+  const int up = ra.Quantity(std::min(j + 1, ra.count - 1)) >= ra.Quantity(j) ? 1 : -1;
+  const double mu = ma.Quantity(i);
+  LtcFitSettings settings;
+  settings.moments = false;
+  LtcMatrix start;
+  for (int step : {2, 1})
+    start =
+        FitLtcTexel(PresetLtcLobeAt(texture.model, ra.Quantity(j + step * up)), mu, start, settings)
+            .minv;
+  const LtcLobe lobe = PresetLtcLobeAt(texture.model, ra.Quantity(j));
+  PresetTexture others = texture;
+  others.channels.clear();
+  for (const PresetChannel &c : texture.channels)
+    if (!IsLtcMatrixMeaning(c.meaning)) others.channels.push_back(c);
+  std::vector<double> values(others.channels.size()), errors(others.channels.size());
+  const Clock::time_point t0 = Clock::now();
+  (void)FitLtcTexel(lobe, mu, start, settings);
+  if (!others.channels.empty()) {
+    const Needs otherNeeds = NeedsOf(others);
+    TexelChannels(others, otherNeeds, RolesOf(others, otherNeeds), {}, index, values.data(),
+                  errors.data());
+  }
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
 }  // namespace
 
 void PresetTexelValues(const PresetTexture &texture, const int index[3], double *values,
@@ -531,14 +575,9 @@ BakeEstimate EstimatePresetBake(const Preset &preset, double secondsPerTexture) 
         PresetTexelValues(texture, index, values, errors);
       };
     } else {
-      PresetTexture small = texture;
-      w.texelsPerCall = 1;
-      for (PresetAxis &a : small.axes) {
-        a.count = std::min(a.count, 2);
-        w.texelsPerCall *= static_cast<size_t>(a.count);
-      }
-      w.evaluateTexel = [small, name = preset.name](int, int, int) {
-        (void)BakePresetTexture(small, name);
+      w.timeTexel = [&texture](int i, int j, int k) {
+        const int index[3] = {i, j, k};
+        return SecondsOfLtcTexel(texture, index);
       };
     }
     work.push_back(std::move(w));

@@ -210,8 +210,9 @@ void PresetTexelValues(const PresetTexture &texture, const int index[3], double 
                        double *errors);
 
 // How long `bake --preset` will take (bake_estimate.h): a few texels of
-// each texture timed; a texture with LTC channels, fitted over its whole
-// grid at once, by baking it on 2 texels per axis. No more texels of a
+// each texture timed; a texel of a texture with LTC channels, fitted over
+// its whole grid at once, as the grid fit has it: warm-started from its
+// neighbour's fit (computed first, untimed). No more texels of a
 // texture are timed once they have taken secondsPerTexture (the listing of
 // all presets stays near a second).
 BakeEstimate EstimatePresetBake(const Preset &preset, double secondsPerTexture = 0.05);
