@@ -38,7 +38,8 @@
 //   OrenNayar sigma = max(0.002, (pi / 2) alpha). HDRP's fitter uses A = 1 -
 //             0.5 s2 / (s2 + 0.57) (the 1992 paper's footnote); this preset
 //             fits the qualitative model's 0.33 (table ltc_oren_nayar's).
-//             No HDRP shader samples this slice.
+//             HDRP's AxF material samples it for its SVBRDF diffuse
+//             (SampleLtcMatrix, the same uv and matrix as Lit's).
 // FabricLambert, KajiyaKaySpecular, KajiyaKayDiffuse, CookTorrance and
 // Ward are not lobes lutbake integrates: those slices stay HDRP's own.
 #include <string>
