@@ -119,6 +119,13 @@ nlohmann::ordered_json ModelJson(const PresetTexture &texture) {
   if (texture.model.alphaMin > 0.0) model["alphaMin"] = texture.model.alphaMin;
   if (texture.model.unitEtaWindow > 0.0) model["unitEtaWindow"] = texture.model.unitEtaWindow;
   for (const PresetChannel &c : texture.channels)
+    if (c.meaning.rfind("ltc_m", 0) == 0) {
+      model["ltcLobe"] = ToString(texture.model.ltcLobe);
+      model["ltcScale"] =
+          texture.model.ltcScale == PresetLtcScale::kUnitM22 ? "m22 = 1" : "m11 = 1";
+      break;
+    }
+  for (const PresetChannel &c : texture.channels)
     if (c.meaning == "sheen_E") {
       model["sheenVisibility"] = ToString(texture.model.sheenVisibility);
       model["sheenAlpha"] = DescribeAlpha(texture.model.sheenAlpha);

@@ -23,6 +23,7 @@ std::vector<TableFormat> ShaderArrayFormats();  // shader_array_table.cpp
 std::vector<TableFormat> CArrayFormats();       // c_array_writer.cpp
 std::vector<TableFormat> ThreejsFormats();      // threejs_module.cpp
 std::vector<TableFormat> BabylonLtcFormats();   // babylon_ltc.cpp
+std::vector<TableFormat> HdrpLtcFormats();      // hdrp_ltc_cs.cpp
 std::vector<TableFormat> FitFormats();          // fit_format.cpp
 
 }  // namespace lutbake

@@ -10,7 +10,7 @@ const std::vector<TableFormat> &AllFormats() {
     std::vector<TableFormat> all;
     for (auto records : {ExrFormats, BinaryFormats, CppHeaderFormats, PngFormats, Ktx2Formats,
                          DdsFormats, IncFormats, JsFormats, ShaderArrayFormats, CArrayFormats,
-                         ThreejsFormats, BabylonLtcFormats, FitFormats})
+                         ThreejsFormats, BabylonLtcFormats, HdrpLtcFormats, FitFormats})
       for (TableFormat &format : records()) all.push_back(std::move(format));
     return all;
   }();

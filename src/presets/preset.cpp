@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -58,6 +59,16 @@ BakeSettings PresetModel::TableSettings() const {
   return settings;
 }
 
+const char *ToString(PresetLtcLobe lobe) {
+  switch (lobe) {
+    case PresetLtcLobe::kGgx: return "ggx";
+    case PresetLtcLobe::kBurley: return "burley (perceptual roughness sqrt(alpha))";
+    case PresetLtcLobe::kSheen: return "sheen (alpha)";
+    case PresetLtcLobe::kOrenNayar: return "oren-nayar qualitative (sigma = pi/2 alpha)";
+  }
+  return "?";
+}
+
 double PresetAxis::Coordinate(int i) const {
   if (placement == TexelPlacement::kEdges)
     return count > 1 ? static_cast<double>(i) / (count - 1) : 0.0;
@@ -96,7 +107,7 @@ struct Needs {
 
 bool IsLtcMatrixMeaning(const std::string &meaning) {
   return meaning == "ltc_m00" || meaning == "ltc_m20" || meaning == "ltc_m02" ||
-         meaning == "ltc_m22";
+         meaning == "ltc_m22" || meaning == "ltc_m11";
 }
 
 Needs NeedsOf(const PresetTexture &texture) {
@@ -224,12 +235,25 @@ double ClippedSphere(double z, double len) {
   return sum / kPi / len;
 }
 
+// The lobe of the model's ltcLobe at the engine's roughness q (PresetLtcLobe).
+LtcLobe PresetLtcLobeAt(const PresetModel &model, double q) {
+  const double alpha = AlphaOf(model.alpha, q, model.alphaMin);
+  switch (model.ltcLobe) {
+    case PresetLtcLobe::kBurley: return BurleyLtcLobe(std::sqrt(alpha));
+    case PresetLtcLobe::kSheen: return SheenLtcLobe(model.sheenVisibility, alpha);
+    case PresetLtcLobe::kOrenNayar:
+      return OrenNayarLtcLobe(OrenNayarVariant::kQualitative, 0.5 * kPi * alpha);
+    case PresetLtcLobe::kGgx: break;
+  }
+  return MicrofacetLtcLobe(Ndf{NdfKind::kGgx, alpha}, model.smith);
+}
+
 // The LTC fits of a texture's (mu, roughness) grid, texel (i over the mu
 // axis, j over the roughness axis) at i * roughness count + j.
 std::vector<LtcTexel> FitPresetLtc(const PresetTexture &texture, int muAxis, int roughnessAxis) {
   const PresetModel &model = texture.model;
-  if (model.fitted != FittedVisibility::kNone)
-    throw std::invalid_argument(texture.file + ": the LTC channels take an exact Smith form");
+  if (model.ltcLobe == PresetLtcLobe::kGgx && model.fitted != FittedVisibility::kNone)
+    throw std::invalid_argument(texture.file + ": the GGX LTC channels take an exact Smith form");
   if (muAxis < 0) throw std::invalid_argument(texture.file + ": the LTC channels need a mu axis");
   const PresetAxis &ma = texture.axes[static_cast<size_t>(muAxis)];
   const PresetAxis &ra = texture.axes[static_cast<size_t>(roughnessAxis)];
@@ -238,12 +262,7 @@ std::vector<LtcTexel> FitPresetLtc(const PresetTexture &texture, int muAxis, int
   for (int j = 0; j < ra.count; ++j) roughness.push_back(ra.Quantity(j));
   LtcFitSettings settings;
   settings.moments = false;  // the channels "E" and "B" integrate them
-  return FitLtcGrid(
-      [&](double q) {
-        return MicrofacetLtcLobe(Ndf{NdfKind::kGgx, AlphaOf(model.alpha, q, model.alphaMin)},
-                                 model.smith);
-      },
-      mu, roughness, settings);
+  return FitLtcGrid([&](double q) { return PresetLtcLobeAt(model, q); }, mu, roughness, settings);
 }
 
 struct AxisRoles {
@@ -371,10 +390,20 @@ void TexelChannels(const PresetTexture &texture, const Needs &needs, const AxisR
       const int count = texture.axes[static_cast<size_t>(roles.roughness)].count;
       const LtcMatrix &m =
           ltc[static_cast<size_t>(axisTexel(roles.mu)) * count + axisTexel(roles.roughness)].minv;
+      // Scaled so that m22 = 1 (HDRP): the fit's m22 > 0 (det M^-1 > 0
+      // and m11 = 1 do not give it; a texel without it is refused).
       value = channel.meaning == "ltc_m00"   ? m.m00
               : channel.meaning == "ltc_m20" ? m.m20
               : channel.meaning == "ltc_m02" ? m.m02
-                                             : m.m22;
+              : channel.meaning == "ltc_m22" ? m.m22
+                                             : 1.0;
+      if (model.ltcScale == PresetLtcScale::kUnitM22) {
+        if (!(m.m22 > 0.0))
+          throw std::runtime_error(texture.file + ": the fitted m22 is " + FormatDouble(m.m22) +
+                                   " at mu = " + FormatDouble(mu) + ", roughness = " +
+                                   FormatDouble(roughness) + ": M^-1 cannot be scaled to m22 = 1");
+        value /= m.m22;  // each entry over m22, correctly rounded
+      }
     } else if (channel.meaning == "clipped_sphere") {
       const double u = texture.axes[0].Coordinate(axisTexel(0));
       const double v = texture.axes.size() > 1 ? texture.axes[1].Coordinate(axisTexel(1)) : 0.0;
@@ -390,6 +419,48 @@ void TexelChannels(const PresetTexture &texture, const Needs &needs, const AxisR
     values[c] = std::clamp(stored, channel.clampMin, channel.clampMax);
     errors[c] = std::fabs(channel.scale) * error + std::abs(stored - values[c]);
   }
+}
+
+// The seconds one texel of a texture with LTC channels costs in
+// BakePresetTexture: its fit as FitLtcGrid starts it, from the fit of its
+// neighbour one roughness step up (fitted first, untimed, from the texel
+// two steps up: a fit from the identity costs several times a warm one),
+// and its other channels as TexelChannels computes them. The lobe is built
+// once a roughness column in the bake: untimed.
+double SecondsOfLtcTexel(const PresetTexture &texture, const int index[3]) {
+  using Clock = std::chrono::steady_clock;
+  const Needs needs = NeedsOf(texture);
+  const AxisRoles roles = RolesOf(texture, needs);
+  if (texture.model.ltcLobe == PresetLtcLobe::kGgx &&
+      texture.model.fitted != FittedVisibility::kNone)
+    throw std::invalid_argument(texture.file + ": the GGX LTC channels take an exact Smith form");
+  const PresetAxis &ma = texture.axes[static_cast<size_t>(roles.mu)];
+  const PresetAxis &ra = texture.axes[static_cast<size_t>(roles.roughness)];
+  const int i = index[roles.mu], j = index[roles.roughness];
+  // The texels above in roughness (Quantity clamps an index past the end).
+  const int up = ra.Quantity(std::min(j + 1, ra.count - 1)) >= ra.Quantity(j) ? 1 : -1;
+  const double mu = ma.Quantity(i);
+  LtcFitSettings settings;
+  settings.moments = false;
+  LtcMatrix start;
+  for (int step : {2, 1})
+    start =
+        FitLtcTexel(PresetLtcLobeAt(texture.model, ra.Quantity(j + step * up)), mu, start, settings)
+            .minv;
+  const LtcLobe lobe = PresetLtcLobeAt(texture.model, ra.Quantity(j));
+  PresetTexture others = texture;
+  others.channels.clear();
+  for (const PresetChannel &c : texture.channels)
+    if (!IsLtcMatrixMeaning(c.meaning)) others.channels.push_back(c);
+  std::vector<double> values(others.channels.size()), errors(others.channels.size());
+  const Clock::time_point t0 = Clock::now();
+  (void)FitLtcTexel(lobe, mu, start, settings);
+  if (!others.channels.empty()) {
+    const Needs otherNeeds = NeedsOf(others);
+    TexelChannels(others, otherNeeds, RolesOf(others, otherNeeds), {}, index, values.data(),
+                  errors.data());
+  }
+  return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
 }  // namespace
@@ -411,7 +482,9 @@ Table BakePresetTexture(const PresetTexture &texture, const std::string &presetN
   const AxisRoles roles = RolesOf(texture, needs);
 
   Table table;
-  table.name = texture.file.substr(0, texture.file.find('.'));
+  // The file's name without its extension ("LtcData.BRDF_GGX" of
+  // LtcData.BRDF_GGX.cs).
+  table.name = texture.file.substr(0, texture.file.rfind('.'));
   const auto tableAxis = [](const PresetAxis &axis, const char *name) {
     Axis out = LinearAxis(name, 0.0, 1.0, axis.count);
     if (axis.placement == TexelPlacement::kEdges && axis.count > 1) {
@@ -487,14 +560,9 @@ BakeEstimate EstimatePresetBake(const Preset &preset, double secondsPerTexture) 
         PresetTexelValues(texture, index, values, errors);
       };
     } else {
-      PresetTexture small = texture;
-      w.texelsPerCall = 1;
-      for (PresetAxis &a : small.axes) {
-        a.count = std::min(a.count, 2);
-        w.texelsPerCall *= static_cast<size_t>(a.count);
-      }
-      w.evaluateTexel = [small, name = preset.name](int, int, int) {
-        (void)BakePresetTexture(small, name);
+      w.timeTexel = [&texture](int i, int j, int k) {
+        const int index[3] = {i, j, k};
+        return SecondsOfLtcTexel(texture, index);
       };
     }
     work.push_back(std::move(w));

@@ -11,6 +11,7 @@ const Preset &FilamentPreset();
 const Preset &FilamentMobilePreset();
 const Preset &UnrealPreset();
 const Preset &UnityHdrpPreset();
+const Preset &UnityHdrpLtcPreset();
 const Preset &GodotPreset();
 const Preset &ThreejsPreset();
 const Preset &ThreejsLtcPreset();

@@ -13,6 +13,7 @@ const std::vector<const Preset *> &AllPresets() {
       &FilamentMobilePreset(),
       &UnrealPreset(),
       &UnityHdrpPreset(),
+      &UnityHdrpLtcPreset(),
       &GodotPreset(),
       &ThreejsPreset(),
       &ThreejsLtcPreset(),

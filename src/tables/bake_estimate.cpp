@@ -37,12 +37,16 @@ BakeEstimate EstimateWork(const std::vector<EstimatedWork> &work, double seconds
             static_cast<int>((2 * stratum + 1) * static_cast<size_t>(w.counts[a]) / (2 * wanted));
       }
       const Clock::time_point start = Clock::now();
+      double seconds = 0.0;
       try {
-        w.evaluateTexel(index[0], index[1], index[2]);
+        if (w.timeTexel)
+          seconds = w.timeTexel(index[0], index[1], index[2]);
+        else
+          w.evaluateTexel(index[0], index[1], index[2]);
       } catch (const std::exception &) {
         // A texel the bake would refuse costs nothing here; the bake says why.
       }
-      spent += std::chrono::duration<double>(Clock::now() - start).count();
+      spent += w.timeTexel ? seconds : std::chrono::duration<double>(Clock::now() - start).count();
       ++timed;
     }
     estimate.timedTexels += timed;

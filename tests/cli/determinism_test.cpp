@@ -206,4 +206,13 @@ TEST(Determinism, EeveeLtcPreset) {
   EXPECT_EQ(ExpectSameFilesForEveryThreadCount("preset_eevee_ltc", "--preset eevee-ltc"), 4);
 }
 
+// Unity HDRP's LTC slices, as C# doubles printed to round-trip (every bit
+// shows): one slice (the grid fit and the writer are the four's) and
+// preset.json.
+TEST(Determinism, UnityHdrpLtcPreset) {
+  EXPECT_EQ(ExpectSameFilesForEveryThreadCount(
+                "preset_unity_hdrp_ltc", "--preset unity-hdrp-ltc --files LtcData.BRDF_Disney.cs"),
+            2);
+}
+
 }  // namespace

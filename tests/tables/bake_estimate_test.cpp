@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <set>
+#include <stdexcept>
 
 #include "lutbake/tables/bake.h"
 
@@ -89,6 +90,25 @@ TEST(BakeEstimate, ACallThatComputesSeveralTexelsCountsEachOnce) {
   // busy time / 4 (the loop's own overhead only adds).
   EXPECT_GE(e.cpuSeconds, busy / 4.0);
   EXPECT_LT(e.cpuSeconds, busy);
+}
+
+TEST(BakeEstimate, ATexelThatTimesItselfCountsItsOwnSeconds) {
+  // timeTexel reports 0.125 s a texel whatever its call took (the untimed
+  // warm-up of an LTC texel): 2 texels timed of 16 within the 0.25 s budget,
+  // the estimate 16 x 0.125 exactly; evaluateTexel is not called.
+  EstimatedWork w;
+  w.counts[0] = 4;
+  w.counts[1] = 4;
+  int calls = 0;
+  w.timeTexel = [&](int, int, int) {
+    ++calls;
+    return 0.125;
+  };
+  w.evaluateTexel = [](int, int, int) { throw std::logic_error("not called"); };
+  const BakeEstimate e = EstimateWork({w}, 0.25);
+  EXPECT_EQ(calls, 2);
+  EXPECT_EQ(e.timedTexels, 2u);
+  EXPECT_EQ(e.cpuSeconds, 16 * 0.125);
 }
 
 TEST(BakeEstimate, ReadsInSecondsOrMinutes) {

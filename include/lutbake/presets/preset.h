@@ -72,6 +72,21 @@ struct PresetAxis {
   double Quantity(int i) const;
 };
 
+// The lobe an LTC texture's matrix channels (ltc_*) are fitted to, its
+// parameter from alpha = AlphaOf(model alpha, roughness, alphaMin):
+//   kGgx        GGX at alpha with the model's Smith form (table ltc_ggx)
+//   kBurley     Burley's diffuse at perceptual roughness sqrt(alpha) (ltc_burley)
+//   kSheen      the sheen lobe at alpha, the model's sheenVisibility (ltc_sheen)
+//   kOrenNayar  the qualitative Oren-Nayar lobe at sigma = (pi / 2) alpha
+//               radians (ltc_oren_nayar; Unity HDRP's BRDF_OrenNayar mapping)
+enum class PresetLtcLobe { kGgx, kBurley, kSheen, kOrenNayar };
+const char *ToString(PresetLtcLobe lobe);
+
+// The scale of M^-1 (the LTC is the same for any positive multiple):
+//   kUnitM11  m11 = 1 (ltc_code, three.js, EEVEE, Babylon.js; the tables')
+//   kUnitM22  m22 = 1 (Unity HDRP's LtcData tables): every entry over m22
+enum class PresetLtcScale { kUnitM11, kUnitM22 };
+
 // The model an engine integrates its channels with, in the models' and
 // tables' own terms: a channel reads its table (TableNamed) under
 // TableSettings(), at alpha from the roughness axis through `alpha`.
@@ -96,6 +111,9 @@ struct PresetModel {
   SheenVisibility sheenVisibility = SheenVisibility::kCharlie;
   AlphaMapping sheenAlpha = AlphaMapping::kLinear;
   double sheenAlphaMin = 0.0;  // sheen_E at alpha = max(alpha, sheenAlphaMin)
+  // The LTC channels' lobe and the scale of their M^-1.
+  PresetLtcLobe ltcLobe = PresetLtcLobe::kGgx;
+  PresetLtcScale ltcScale = PresetLtcScale::kUnitM11;
 
   // The settings the channels' tables are evaluated under: smith,
   // sheenVisibility and sheenAlpha (the rest their defaults).
@@ -133,11 +151,13 @@ const char *DescribeAlpha(AlphaMapping alpha);
 //               axis itself), bilinear between its entries as the authors'
 //               renderer reads it; not integrated by lutbake, so with no
 //               bound of their own (a texel's bound is its storage's only)
-//   "ltc_m00", "ltc_m20", "ltc_m02", "ltc_m22"  the entries of M^-1 of the
-//               linearly transformed cosine of the GGX lobe (table ltc_ggx's
-//               channels; models/ltc.h), fitted over the texture's whole
-//               (mu, roughness) grid at once (integrators/ltc_fit.h,
-//               FitLtcGrid); exact Smith forms only
+//   "ltc_m00", "ltc_m20", "ltc_m02", "ltc_m22", "ltc_m11"  the entries of
+//               M^-1 of the linearly transformed cosine of the model's
+//               ltcLobe (GGX: table ltc_ggx's channels; models/ltc.h), fitted
+//               over the texture's whole (mu, roughness) grid at once
+//               (integrators/ltc_fit.h, FitLtcGrid), scaled as ltcScale
+//               says (ltc_m11 is 1 under kUnitM11); GGX with exact Smith
+//               forms only
 //   "clipped_sphere"  ltc_code's horizon-clipped sphere (LTC_2.w): the form
 //               factor of a spherical cap, clipped at the horizon, over its
 //               unclipped one |F|, at z = 2u - 1 (the cap's axis . n) and
@@ -200,8 +220,9 @@ void PresetTexelValues(const PresetTexture &texture, const int index[3], double 
                        double *errors);
 
 // How long `bake --preset` will take (bake_estimate.h): a few texels of
-// each texture timed; a texture with LTC channels, fitted over its whole
-// grid at once, by baking it on 2 texels per axis. No more texels of a
+// each texture timed; a texel of a texture with LTC channels, fitted over
+// its whole grid at once, as the grid fit has it: warm-started from its
+// neighbour's fit (computed first, untimed). No more texels of a
 // texture are timed once they have taken secondsPerTexture (the listing of
 // all presets stays near a second).
 BakeEstimate EstimatePresetBake(const Preset &preset, double secondsPerTexture = 0.05);

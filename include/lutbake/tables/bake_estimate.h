@@ -46,10 +46,14 @@ BakeEstimate EstimateBake(const std::vector<EstimatedTable> &tables, double seco
 // x counts[2] texels, of which evaluateTexel(i, j, k) computes
 // texelsPerCall (1, or a small grid where the work is a fit over the whole
 // grid at once).
+// timeTexel, where set, replaces evaluateTexel: it returns the seconds one
+// texel costs, measured by itself (an LTC texel: the fit warm-started from
+// its neighbour's, which it computes first, untimed, as the bake has it).
 struct EstimatedWork {
   int counts[3] = {1, 1, 1};
   std::function<void(int i, int j, int k)> evaluateTexel;
   size_t texelsPerCall = 1;
+  std::function<double(int i, int j, int k)> timeTexel;
 };
 BakeEstimate EstimateWork(const std::vector<EstimatedWork> &work, double secondsPerItem = 0.25);
 
