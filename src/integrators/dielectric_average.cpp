@@ -19,6 +19,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "integrators/dielectric_kernel.h"
 #include "integrators/graded_panels.h"
 #include "lutbake/core/math.h"
 #include "lutbake/integrators/dielectric_quadrature.h"
@@ -103,40 +104,6 @@ struct CosineLine {
   double a, ka, b, kb, divisor;
 };
 
-// G2 at n pairs of cosines (0 unless both are positive), gathered first
-// (1.2x faster than a call per node, measured on 40 texels).
-void G2Batch(const Setup &s, const double *muO, const double *muI, size_t n, double *out) {
-  if (s.ndf.kind != NdfKind::kGgx) {
-    for (size_t k = 0; k < n; ++k) out[k] = G2(s, muO[k], muI[k]);
-    return;
-  }
-  // One loop per Smith form.
-  const auto loop = [&](auto form) {
-    const double alpha2 = s.alpha2;
-    for (size_t k = 0; k < n; ++k) {
-      const double o = muO[k], i = muI[k];
-      const double mo0 = o < 1.0 ? o : 1.0, mi0 = i < 1.0 ? i : 1.0;
-      const bool valid = (mo0 > 0.0) & (mi0 > 0.0);
-      // Invalid pairs are computed at 1 (finite) and dropped below.
-      const double mo = valid ? mo0 : 1.0, mi = valid ? mi0 : 1.0;
-      const double co = (1.0 - mo) * (1.0 + mo), ci = (1.0 - mi) * (1.0 + mi);
-      const double so = alpha2 * (co > 0.0 ? co : 0.0), si = alpha2 * (ci > 0.0 ? ci : 0.0);
-      const double Lo = so / (2.0 * (std::sqrt(mo * mo + so) + mo));
-      const double Li = si / (2.0 * (std::sqrt(mi * mi + si) + mi));
-      const double g = form(mo, mi, Lo, Li);
-      out[k] = valid ? g : 0.0;
-    }
-  };
-  if (s.smith == SmithForm::kCorrelated)
-    loop([](double mo, double mi, double Lo, double Li) {
-      return mo * mi / (mo * mi + mi * Lo + mo * Li);
-    });
-  else
-    loop([](double mo, double mi, double Lo, double Li) {
-      return (mo / (mo + Lo)) * (mi / (mi + Li));
-    });
-}
-
 // The azimuth integrals run in v = tan(psi / 2) (or of pi - psi): cos(psi)
 // = (1 - v^2) / (1 + v^2), d(psi) = 2 dv / (1 + v^2), no trigonometry at the
 // nodes. v = 0 is psi = 0, v = 1 psi = pi/2; a horizon at cos(psi_k) = k / S
@@ -147,7 +114,7 @@ void G2Batch(const Setup &s, const double *muO, const double *muI, size_t n, dou
 double HalfAngleArc(double from, double to, double scalePsi, bool towardFrom,
                     const GaussLegendreRule &rule, const Setup &s, const CosineLine &line) {
   thread_local std::vector<Panel> panels;
-  thread_local std::vector<double> muO, muI, weight, g2;
+  thread_local std::vector<double> nodes, ruleW, terms;
   panels.clear();
   if (!(from < to)) return 0.0;
   const double end = towardFrom ? from : to;
@@ -158,29 +125,37 @@ double HalfAngleArc(double from, double to, double scalePsi, bool towardFrom,
     panels.push_back({from, to});
   const size_t n = static_cast<size_t>(rule.n), total = panels.size() * n;
   *s.evaluations += total;
-  if (muO.size() < total) {
-    muO.resize(total);
-    muI.resize(total);
-    weight.resize(total);
-    g2.resize(total);
+  if (nodes.size() < total) {
+    nodes.resize(total);
+    ruleW.resize(total);
+    terms.resize(total);
   }
   size_t k = 0;
   for (const Panel &p : panels) {
     const double len = p.b - p.a;
     for (size_t j = 0; j < n; ++j, ++k) {
-      const double v = p.a + len * rule.x[j], q = 1.0 / (1.0 + v * v);
-      const double cosPsi = (1.0 - v * v) * q;
-      muO[k] = line.a + line.ka * cosPsi;
-      muI[k] = (line.b + line.kb * cosPsi) / line.divisor;
-      weight[k] = rule.w[j] * q;
+      nodes[k] = p.a + len * rule.x[j];
+      ruleW[k] = rule.w[j];
     }
   }
-  G2Batch(s, muO.data(), muI.data(), total, g2.data());
+  if (s.ndf.kind == NdfKind::kGgx) {
+    // q, the cosines and G2 by the vector kernel (dielectric_kernel.h).
+    const kernel::ArcConstants constants{s.alpha2, s.smith,           line.a, line.ka, line.b,
+                                         line.kb,  1.0 / line.divisor};
+    kernel::ArcTerms(constants, nodes.data(), ruleW.data(), total, terms.data());
+  } else {
+    for (k = 0; k < total; ++k) {
+      const double v = nodes[k], q = 1.0 / (1.0 + v * v);
+      const double cosPsi = (1.0 - v * v) * q;
+      terms[k] = ruleW[k] * q *
+                 G2(s, line.a + line.ka * cosPsi, (line.b + line.kb * cosPsi) / line.divisor);
+    }
+  }
   double sum = 0.0;
   k = 0;
   for (const Panel &p : panels) {
     double part = 0.0;
-    for (size_t j = 0; j < n; ++j, ++k) part += weight[k] * g2[k];
+    for (size_t j = 0; j < n; ++j, ++k) part += terms[k];
     sum += part * (p.b - p.a);
   }
   return 2.0 * sum;

@@ -159,6 +159,56 @@ void DielectricTermsImpl(const DielectricConstants &k, double sc, bool tail, con
   }
 }
 
+// One vector of an arc's nodes (see ArcTerms): ArcTermScalar's operations,
+// lane by lane.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V ArcLanes(D d, const ArcConstants &k, V v, V ruleW) {
+  const V one = hn::Set(d, 1.0), two = hn::Set(d, 2.0), zero = hn::Zero(d);
+  const V alpha2 = hn::Set(d, k.alpha2);
+  const V v2 = hn::Mul(v, v);
+  const V q = hn::Div(one, hn::Add(one, v2));
+  const V cosPsi = hn::Mul(hn::Sub(one, v2), q);
+  const V o = hn::Add(hn::Set(d, k.a), hn::Mul(hn::Set(d, k.ka), cosPsi));
+  const V i = hn::Mul(hn::Add(hn::Set(d, k.b), hn::Mul(hn::Set(d, k.kb), cosPsi)),
+                      hn::Set(d, k.invDivisor));
+  const V mo0 = hn::Min(o, one), mi0 = hn::Min(i, one);
+  const auto valid = hn::And(hn::Gt(mo0, zero), hn::Gt(mi0, zero));
+  // Invalid pairs computed at 1 (finite) and dropped below.
+  const V mo = hn::IfThenElse(valid, mo0, one), mi = hn::IfThenElse(valid, mi0, one);
+  const V so = hn::Mul(alpha2, hn::Max(hn::Mul(hn::Sub(one, mo), hn::Add(one, mo)), zero));
+  const V si = hn::Mul(alpha2, hn::Max(hn::Mul(hn::Sub(one, mi), hn::Add(one, mi)), zero));
+  const V dO = hn::Mul(two, hn::Add(hn::Sqrt(hn::Add(hn::Mul(mo, mo), so)), mo));
+  const V dI = hn::Mul(two, hn::Add(hn::Sqrt(hn::Add(hn::Mul(mi, mi), si)), mi));
+  V g;
+  if (k.smith == SmithForm::kCorrelated) {
+    const V p = hn::Mul(hn::Mul(mo, mi), hn::Mul(dO, dI));
+    g = hn::Div(p, hn::Add(hn::Add(p, hn::Mul(hn::Mul(mi, so), dI)), hn::Mul(hn::Mul(mo, si), dO)));
+  } else {
+    const V po = hn::Mul(mo, dO), pi = hn::Mul(mi, dI);
+    g = hn::Div(hn::Mul(po, pi), hn::Mul(hn::Add(po, so), hn::Add(pi, si)));
+  }
+  return hn::Mul(hn::Mul(ruleW, q), hn::IfThenElseZero(valid, g));
+}
+
+void ArcTermsImpl(const ArcConstants &k, const double *v, const double *ruleW, size_t n,
+                  double *terms) {
+  const hn::ScalableTag<double> d;
+  const size_t lanes = hn::Lanes(d);
+  size_t i = 0;
+  for (; i + lanes <= n; i += lanes)
+    hn::StoreU(ArcLanes(d, k, hn::LoadU(d, v + i), hn::LoadU(d, ruleW + i)), d, terms + i);
+  if (i < n) {
+    // Padded with v = 0 and weight 0 (the term is then 0).
+    HWY_ALIGN double bv[kMaxLanes] = {}, bw[kMaxLanes] = {}, bt[kMaxLanes];
+    for (size_t j = 0; i + j < n; ++j) {
+      bv[j] = v[i + j];
+      bw[j] = ruleW[i + j];
+    }
+    hn::Store(ArcLanes(d, k, hn::Load(d, bv), hn::Load(d, bw)), d, bt);
+    for (size_t j = 0; i + j < n; ++j) terms[i + j] = bt[j];
+  }
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace lutbake::kernel
 HWY_AFTER_NAMESPACE();
@@ -168,6 +218,32 @@ namespace lutbake::kernel {
 
 HWY_EXPORT(DielectricWeightsImpl);
 HWY_EXPORT(DielectricTermsImpl);
+HWY_EXPORT(ArcTermsImpl);
+
+void ArcTerms(const ArcConstants &constants, const double *v, const double *ruleW, size_t n,
+              double *terms) {
+  HWY_DYNAMIC_DISPATCH(ArcTermsImpl)(constants, v, ruleW, n, terms);
+}
+
+double ArcTermScalar(const ArcConstants &k, double v, double ruleW) {
+  const double q = 1.0 / (1.0 + v * v);
+  const double cosPsi = (1.0 - v * v) * q;
+  const double o = k.a + k.ka * cosPsi, i = (k.b + k.kb * cosPsi) * k.invDivisor;
+  const double mo = o < 1.0 ? o : 1.0, mi = i < 1.0 ? i : 1.0;
+  if (!(mo > 0.0 && mi > 0.0)) return ruleW * q * 0.0;
+  const double so = k.alpha2 * std::max((1.0 - mo) * (1.0 + mo), 0.0);
+  const double si = k.alpha2 * std::max((1.0 - mi) * (1.0 + mi), 0.0);
+  const double dO = 2.0 * (std::sqrt(mo * mo + so) + mo), dI = 2.0 * (std::sqrt(mi * mi + si) + mi);
+  double g = 0.0;
+  if (k.smith == SmithForm::kCorrelated) {
+    const double p = (mo * mi) * (dO * dI);
+    g = p / (p + (mi * so) * dI + (mo * si) * dO);
+  } else {
+    const double po = mo * dO, pi = mi * dI;
+    g = (po * pi) / ((po + so) * (pi + si));
+  }
+  return ruleW * q * g;
+}
 
 void DielectricTerms(const DielectricConstants &constants, double sc, bool tail, const double *v,
                      const double *ruleJac, size_t n, double *terms) {

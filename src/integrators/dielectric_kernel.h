@@ -52,6 +52,29 @@ void DielectricWeights(const DielectricConstants &constants, const double *c, co
 void DielectricTerms(const DielectricConstants &constants, double sc, bool tail, const double *v,
                      const double *ruleJac, size_t n, double *terms);
 
+// What the nodes of one azimuth arc of the average's rule share
+// (dielectric_average.cpp, GGX): the two cosines mu_o = a + ka cos(psi) and
+// mu_i = (b + kb cos(psi)) invDivisor along it, alpha^2 and the Smith form.
+struct ArcConstants {
+  double alpha2 = 1.0;
+  SmithForm smith = SmithForm::kCorrelated;
+  double a = 1.0, ka = 0.0, b = 1.0, kb = 0.0, invDivisor = 1.0;
+};
+
+// The arc's terms at nodes v[k] = tan(psi / 2) with rule weights ruleW[k]:
+//   q = 1 / (1 + v^2), cos(psi) = (1 - v^2) q,
+//   terms[k] = (ruleW[k] q) G2(mu_o, mu_i),
+// each cosine clamped to at most 1, 0 unless both are positive. G2 is
+// smith.h's for GGX, with L = mu Lambda(mu) = s / d, s = alpha^2 (1 - mu^2),
+// d = 2 (sqrt(mu^2 + s) + mu) (ggx.h), multiplied through by d_o d_i (one
+// division, not three):
+//   correlated: mu_o mu_i d_o d_i / (mu_o mu_i d_o d_i + mu_i s_o d_i + mu_o s_i d_o),
+//   separable:  (mu_o d_o)(mu_i d_i) / ((mu_o d_o + s_o)(mu_i d_i + s_i)).
+// The same bits on every instruction set as ArcTermScalar.
+void ArcTerms(const ArcConstants &constants, const double *v, const double *ruleW, size_t n,
+              double *terms);
+double ArcTermScalar(const ArcConstants &constants, double v, double ruleW);
+
 // The same, one facet at a time in plain C++ (the reference the vector
 // lanes are tested against, and the weights the kernel's lanes reproduce).
 double DielectricWeightScalar(const DielectricConstants &constants, double c, double hz,

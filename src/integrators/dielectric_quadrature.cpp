@@ -26,8 +26,14 @@ using graded::MapNode;
 using graded::Panel;
 using graded::Point;
 
+// Gauss nodes per outer and inner panel at each level; Refine starts at
+// levels 1 and 2. Two ladders: for eta in [1/4, 4] (every default table's
+// eta axis) 6 and 9 nodes on inner panels graded with ratio 4
+// (kInnerKeepNear); beyond, 7 and 10 nodes with ratio 2, as before.
 constexpr int kLevels = 6;
-constexpr int kNodes[kLevels] = {5, 7, 10, 14, 19, 25};
+constexpr int kNodesNear[kLevels] = {5, 6, 9, 12, 16, 21};
+constexpr int kNodesFar[kLevels] = {5, 7, 10, 14, 19, 25};
+constexpr double kNearEta = 4.0;
 constexpr double kBoundFloor = 1e-10;
 // The level difference is multiplied by this: measured on 144 points of
 // both NDFs (eta in {1/2.42 .. 2.42}, mu_o 0.05..1, r 0.3..1) against the
@@ -42,7 +48,19 @@ constexpr double kToleranceShare = 0.2;
 // The share of the tolerance the outer panels' doubled differences may
 // take together.
 constexpr double kPanelShare = 0.5;
-constexpr double kMaxPanel = 0.5;          // in x and w
+constexpr double kMaxPanel = 0.5;  // in x and w
+// For eta in [1/4, 4] GGX's inner panels are graded toward the kinks with
+// ratio 4 (each keeps a quarter of what is left): with 9 Gauss nodes a panel
+// [d, 4 d] from a singularity at distance ~d is still resolved far below its
+// share, and ratio 2 spent 23% more facet weights on panels whose two
+// starting levels agreed to 1e-14. What did not hold, against the adaptive
+// reference (tools/validate_dielectric_bounds.sh): a start at 6 and 8
+// nodes on these panels agreed by chance (eta = 128, mu_o = 0.5625, r =
+// 0.229: 2.5e-8 off with a bound of 6.8e-9; spec_E at eta = 1/3, mu_o =
+// 0.271, r = 0.979: 1.2e-8 against 6.3e-9), and so did the coarse outer grid
+// at ratio 8 (mu_o = 1/48, r = 0.854, eta = 1/128: 7.5e-9 against 6.1e-9).
+constexpr double kInnerKeepNear = 0.25;
+constexpr double kInnerKeepFar = 0.5;
 constexpr double kBeckmannMaxPanel = 1.0;  // in t (exp(-t^2) is entire)
 constexpr double kBeckmannCut = 7.0;       // t = T / alpha
 constexpr int kScanAzimuths = 1024;        // to find the outer kinks
@@ -69,6 +87,9 @@ struct Setup {
   double cc2;                             // c_crit^2 = 1 - eta^2 for eta < 1, else 0
   double horizonScale;                    // in mu_i: min(alpha, mu_o) / 2
   double grazingScale;                    // in c, at o.h = 0: sqrt(eta^2 - 1) / 2 (0: none)
+  // The ladder of nodes per level and GGX's inner grading (kNearEta).
+  const int *nodes;
+  double innerKeep;
 };
 
 enum Kind : int { kFacet = 1, kMirror = 2, kCritical = 3, kRefracted = 4, kSplit = 5 };
@@ -385,6 +406,7 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
     points.push_back(coreLast);
     for (int k = 0; k < nBranch; ++k) branchX[k] = branch[k] / alpha;
     const double startRoot = MarkStartRoot(branchX, nBranch, &points);
+    for (Point &point : points) point.keep = s.innerKeep;
     BuildPanels(points, kMaxPanel, 0.0, &panels);
     MapStartRoot(startRoot, &panels);
     MapNearBranchPoints(branchX, nBranch, &panels);
@@ -412,6 +434,7 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
       points.push_back({alpha / T_s, sAbove * alpha / (T_s * T_s), 0.0, qAbove, false});
       for (int k = 0; k < nBranch; ++k) branchX[k] = alpha / branch[k];
       const double tailRoot = MarkStartRoot(branchX, nBranch, &points);
+      for (Point &point : points) point.keep = s.innerKeep;
       BuildPanels(points, kMaxPanel, alpha, &panels);
       MapStartRoot(tailRoot, &panels);
       MapNearBranchPoints(branchX, nBranch, &panels);
@@ -469,6 +492,9 @@ Setup MakeSetup(NdfKind kind, SmithForm smith, DielectricLobes lobes, double alp
   s.cc2 = eta < 1.0 ? (1.0 - eta) * (1.0 + eta) : 0.0;
   s.horizonScale = std::max(0.5 * std::min(alpha, mu_o), kSmallestScale);
   s.grazingScale = eta > 1.0 ? 0.5 * std::sqrt((eta - 1.0) * (eta + 1.0)) : 0.0;
+  const bool near = eta >= 1.0 / kNearEta && eta <= kNearEta;
+  s.nodes = near ? kNodesNear : kNodesFar;
+  s.innerKeep = near ? kInnerKeepNear : kInnerKeepFar;
   return s;
 }
 
@@ -631,7 +657,7 @@ std::vector<Panel> OuterPanels(const Setup &s, const OuterGrid &grid) {
 
 // One outer panel at one level (without the 1/pi).
 double PanelAtLevel(const Setup &s, const Panel &p, int level, uint64_t *evaluations) {
-  const int n = kNodes[level];
+  const int n = s.nodes[level];
   const GaussLegendreRule &rule = GaussLegendre(n);
   double part = 0.0;
   for (int j = 0; j < n; ++j) {
@@ -667,10 +693,12 @@ DielectricIntegral Refine(const Setup &s, const std::vector<Panel> &outer, doubl
     // Levels 0 and 1 (5 and 7 nodes) can agree by chance where a panel
     // holds an unresolved kink: at mu_o = 0.046875, r = 0.703125, eta = 2/3
     // (a texel of the default glass_E) both were 2.2e-7 off and 4e-10 apart,
-    // so the bound said 5.9e-9. Starting at levels 1 and 2 that texel is
-    // within 7e-12; over 3456 (mu_o, r, eta, lobes) points of both sides
-    // the start at 0 left one value outside its bound and this start none,
-    // at 1.3x the time.
+    // so the bound said 5.9e-9. Starting at levels 1 and 2 (7 and 10 nodes)
+    // that texel is within 7e-12; over 3456 (mu_o, r, eta, lobes) points of
+    // both sides the start at 0 left one value outside its bound and this
+    // start none, at 1.3x the time. For eta in [1/4, 4] levels 1 and 2 are
+    // 6 and 9 nodes on coarser inner panels (kInnerKeepNear): that texel
+    // within 2.4e-10 of the reference (bound 6e-9).
     const double v0 = PanelAtLevel(s, p, 1, evaluations) * kInvPi;
     const double v1 = PanelAtLevel(s, p, 2, evaluations) * kInvPi;
     states.push_back({v1, std::abs(v1 - v0), 2});

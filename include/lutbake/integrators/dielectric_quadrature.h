@@ -78,9 +78,12 @@
 // (integrators/dielectric_kernel.h: the same bits on every instruction set,
 // summed in node order); Beckmann's by DielectricFacetWeight.
 //
+// For eta in [1/4, 4] the albedo's levels take n(k) = 5, 6, 9, 12, 16, 21
+// nodes on inner panels graded with ratio 4, not 2 (dielectric_quadrature.cpp).
+//
 // The bound. Level k uses n(k) = 5, 7, 10, 14, 19, 25 Gauss nodes per outer and
 // inner panel. The albedo refines its outer panels one by one: each at
-// levels 0 and 1, then the one with the largest level difference a level
+// levels 1 and 2, then the one with the largest level difference a level
 // further, until 2 sum_p |V_p,k - V_p,k-1| <= 0.5 tolerance (or no panel can
 // go further). The value is the sum of the panels' last levels, the bound
 // 2 sum_p |V_p,k - V_p,k-1| + 1e-10 + 0.2 tolerance + the Beckmann cut (a
