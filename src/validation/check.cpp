@@ -552,11 +552,12 @@ class Checker {
     // The adaptive Gauss-Kronrod reference, not the bake's default panel
     // quadrature: an independent method (another parameterisation, another
     // rule, another error estimate) judges the table (unless its definition
-    // names another reference, and why).
-    s.estimator = t.def->ReferenceEstimator();
-    // Far below what the table claims (1/64 of its errorMax), but not below
-    // the option (float32 storage rounds at 6e-8 anyway) nor above 1e-6.
-    const double tolerance = std::clamp(t.statedErrorMax / 64.0, options_.referenceTolerance, 1e-6);
+    // names another reference, and why), far below what the table claims
+    // (TableDefinition::ReferenceForCheck).
+    const TableDefinition::CheckReference reference =
+        t.def->ReferenceForCheck(t.statedErrorMax, options_.referenceTolerance);
+    s.estimator = reference.estimator;
+    const double tolerance = reference.tolerance;
     // The adaptive quadrature is asked for tolerance / (2
     // kQuadratureErrorFactor) in a tolerance run, the panel rule for it.
     s.tolerance = s.estimator == Estimator::kAdaptiveQuadrature
@@ -577,17 +578,19 @@ class Checker {
   void ComputeReferences() {
     // Task::texel of a random point and of a point of the albedo-scaling grid.
     constexpr size_t kPointTexel = SIZE_MAX, kGridTexel = SIZE_MAX - 1;
-    // The panel rule's tolerance for the random points' truth.
+    // The panel rule's tolerance for the random points' truth (unless the
+    // table's definition names one).
     constexpr double kPointTolerance = 1e-9;
     struct Task {
       Loaded *t;
       size_t texel;  // texel index, or kPointTexel, kGridTexel
       double x, y, z;
       PointValue *out;
-      // The panel rule at 1e-10 rather than the reference: the furnace
-      // grid's headline numbers (see CheckAlbedoScaling) and the random
-      // points' truth, which judge nothing.
+      // The panel rule at `tolerance` rather than the reference: the
+      // furnace grid's headline numbers (see CheckAlbedoScaling, 1e-10) and
+      // the random points' truth, which judge nothing.
       bool panel = false;
+      double tolerance = 0.0;
     };
     std::vector<Task> tasks;
     for (auto &[kind, t] : tables_) {
@@ -610,8 +613,15 @@ class Checker {
       // truth is therefore the panel rule at kPointTolerance (3 digits of
       // any deviation above 1e-6), not the reference's nested refinement:
       // 256 such points of E_avg were 3/4 of the check of the default set.
+      // A table whose definition names a tolerance for them (the dielectric
+      // tables, judged by their own panel rule: dielectric_table.h) gets the
+      // panel rule at that tolerance.
+      const double namedTolerance =
+          def.ReferenceForCheck(t.statedErrorMax, options_.referenceTolerance).pointTolerance;
       const bool panelPoints =
-          !t.table.is3D() && def.ReferenceEstimator() == Estimator::kAdaptiveQuadrature;
+          namedTolerance > 0.0 ||
+          (!t.table.is3D() && def.ReferenceEstimator() == Estimator::kAdaptiveQuadrature);
+      const double pointTolerance = namedTolerance > 0.0 ? namedTolerance : kPointTolerance;
       RandomStream random(HashValues({options_.seed, def.SeedId()}));
       points_[kind].resize(static_cast<size_t>(options_.randomPoints));
       for (RandomPoint &p : points_[kind]) {
@@ -620,7 +630,7 @@ class Checker {
                              : 0.0;
         p.z = t.table.is3D() ? t.table.z.min + (t.table.z.max - t.table.z.min) * random.NextDouble()
                              : 0.0;
-        tasks.push_back({&t, kPointTexel, p.x, p.y, p.z, &p.truth, panelPoints});
+        tasks.push_back({&t, kPointTexel, p.x, p.y, p.z, &p.truth, panelPoints, pointTolerance});
       }
       // The albedo-scaling furnace's grid: cell centres of a g x g grid
       // over the axes (mu = 0 itself, infinite for Charlie's sheen, is not
@@ -636,7 +646,7 @@ class Checker {
             p.y = t.table.y.min + (t.table.y.max - t.table.y.min) * (j + 0.5) / g;
           }
         for (RandomPoint &p : grid)
-          tasks.push_back({&t, kGridTexel, p.x, p.y, 0.0, &p.truth, true});
+          tasks.push_back({&t, kGridTexel, p.x, p.y, 0.0, &p.truth, true, 1e-10});
       }
     }
     std::atomic<size_t> done{0};
@@ -652,8 +662,9 @@ class Checker {
         if (task.panel) {
           BakeSettings s = task.t->model;
           s.estimator = Estimator::kQuadrature;
-          s.tolerance = task.texel == kPointTexel ? kPointTolerance : 1e-10;
-          *task.out = task.t->def->EvaluateIntegrals(s, task.x, task.y);
+          s.tolerance = task.tolerance;
+          *task.out = task.t->table.is3D() ? task.t->def->Evaluate3D(s, task.x, task.y, task.z)
+                                           : task.t->def->EvaluateIntegrals(s, task.x, task.y);
         } else {
           *task.out = Reference(*task.t, task.x, task.y, task.z);
         }
