@@ -52,6 +52,12 @@ class DielectricTable : public TableDefinition {
   int DefaultSize() const override { return 32; }
   // Only the visible-normal sampler (vndf, vndf-random) and the quadratures.
   std::string EstimatorProblem(Estimator e) const override;
+  // `lutbake check` judges every texel by the bake's own panel rule
+  // (IntegrateDielectricAlbedo, IntegrateDielectricAverage) at 1/16 of the
+  // stated errorMax, not below kPanelReferenceFloor (nor the option, when
+  // that is finer), and the random points' truth by it at the default
+  // tolerance (the .cpp says why).
+  CheckReference ReferenceForCheck(double statedErrorMax, double optionTolerance) const override;
 
   // The eta axis: `size` values uniform in s, with the material nodes (the
   // default axis, above) or without them (--eta-size N: exactly N slices;
@@ -143,9 +149,9 @@ class DielectricAverageTable final : public DielectricTable {
   // As many samples per texel as a whole 32-texel row of the 3D table.
   uint64_t SamplesPerTexel(const BakeSettings &s) const override;
   double ReferenceCost() const override { return 32.0; }
-  // No adaptive E_avg: check judges the texels with the panel rule at 1/64
-  // of their bound, and independently through the average of the 3D
-  // table's rows, whose texels it holds to the adaptive rule.
+  // No adaptive E_avg: report's reference is the panel rule; check judges
+  // the texels with it as the 3D tables' (ReferenceForCheck), and through
+  // the average of the 3D table's rows.
   Estimator ReferenceEstimator() const override { return Estimator::kQuadrature; }
   TableRelations Relations() const override;
   // The eta = 1 slice: 0 for reflection, IndexMatchedAverage for glass.

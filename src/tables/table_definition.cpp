@@ -1,5 +1,6 @@
 #include "lutbake/tables/table_definition.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "lutbake/core/hash.h"
@@ -36,6 +37,16 @@ std::string TableDefinition::QuadratureBound(const BakeSettings &s) const {
   if (s.estimator == Estimator::kAdaptiveQuadrature)
     return FormatDouble(kQuadratureErrorFactor) + " x the Gauss-Kronrod estimate + 1e-10";
   return "quadrature texels: |V_k - V_(k-1)| + 1e-10 of the panel rule at two orders";
+}
+
+TableDefinition::CheckReference TableDefinition::ReferenceForCheck(double statedErrorMax,
+                                                                   double optionTolerance) const {
+  // Far below what the table claims (1/64 of its errorMax), but not below
+  // the option (float32 storage rounds at 6e-8 anyway) nor above 1e-6.
+  CheckReference r;
+  r.estimator = ReferenceEstimator();
+  r.tolerance = std::clamp(statedErrorMax / 64.0, optionTolerance, 1e-6);
+  return r;
 }
 
 std::string RequiredMetadata(const Table &table, const std::string &key,

@@ -76,6 +76,10 @@ struct Loaded {
   BakeSettings model;                 // the model the files state (ndf, smith, fresnel, ...)
   bool usable = false;                // metadata understood: the numeric checks can run
   std::vector<double> ref, refError;  // the quadrature at every texel, same layout as values
+  // Where the reference is the table's own rule: a sample of texels (flat
+  // indices) and their values by the independent one (CheckIndependent).
+  std::vector<size_t> independentTexels;
+  std::vector<PointValue> independent;
 
   // The bound a texel's value claims: its own, or the stated maximum.
   double Bound(size_t i) const { return perTexelErrors ? table.errors[i] : statedErrorMax; }
@@ -154,6 +158,7 @@ class Checker {
         CheckFinite(t);
         CheckRange(t);
         CheckTexels(t);
+        CheckIndependent(t);
         CheckPoints(t);
         CheckMonotonic(t);
         CheckClosedForm(t);
@@ -548,15 +553,27 @@ class Checker {
   // ---- the reference ---------------------------------------------------
 
   BakeSettings ReferenceSettings(const Loaded &t) const {
-    BakeSettings s = t.model;
     // The adaptive Gauss-Kronrod reference, not the bake's default panel
     // quadrature: an independent method (another parameterisation, another
     // rule, another error estimate) judges the table (unless its definition
-    // names another reference, and why).
-    s.estimator = t.def->ReferenceEstimator();
-    // Far below what the table claims (1/64 of its errorMax), but not below
-    // the option (float32 storage rounds at 6e-8 anyway) nor above 1e-6.
-    const double tolerance = std::clamp(t.statedErrorMax / 64.0, options_.referenceTolerance, 1e-6);
+    // names another reference, and why), far below what the table claims
+    // (TableDefinition::ReferenceForCheck).
+    return SettingsFor(t, t.def->ReferenceForCheck(t.statedErrorMax, options_.referenceTolerance));
+  }
+
+  // The independent rule of a table whose reference is its own
+  // (CheckIndependent): what the default TableDefinition::ReferenceForCheck
+  // names, ReferenceEstimator() at 1/64 of errorMax.
+  BakeSettings IndependentSettings(const Loaded &t) const {
+    return SettingsFor(t, t.def->TableDefinition::ReferenceForCheck(t.statedErrorMax,
+                                                                    options_.referenceTolerance));
+  }
+
+  BakeSettings SettingsFor(const Loaded &t,
+                           const TableDefinition::CheckReference &reference) const {
+    BakeSettings s = t.model;
+    s.estimator = reference.estimator;
+    const double tolerance = reference.tolerance;
     // The adaptive quadrature is asked for tolerance / (2
     // kQuadratureErrorFactor) in a tolerance run, the panel rule for it.
     s.tolerance = s.estimator == Estimator::kAdaptiveQuadrature
@@ -577,17 +594,22 @@ class Checker {
   void ComputeReferences() {
     // Task::texel of a random point and of a point of the albedo-scaling grid.
     constexpr size_t kPointTexel = SIZE_MAX, kGridTexel = SIZE_MAX - 1;
-    // The panel rule's tolerance for the random points' truth.
+    // The panel rule's tolerance for the random points' truth (unless the
+    // table's definition names one).
     constexpr double kPointTolerance = 1e-9;
+    // Texels judged by the independent rule too (CheckIndependent).
+    constexpr size_t kIndependentTexels = 64;
     struct Task {
       Loaded *t;
       size_t texel;  // texel index, or kPointTexel, kGridTexel
       double x, y, z;
       PointValue *out;
-      // The panel rule at 1e-10 rather than the reference: the furnace
-      // grid's headline numbers (see CheckAlbedoScaling) and the random
-      // points' truth, which judge nothing.
+      // The panel rule at `tolerance` rather than the reference: the
+      // furnace grid's headline numbers (see CheckAlbedoScaling, 1e-10) and
+      // the random points' truth, which judge nothing.
       bool panel = false;
+      double tolerance = 0.0;
+      bool independent = false;  // IndependentSettings instead of the reference
     };
     std::vector<Task> tasks;
     for (auto &[kind, t] : tables_) {
@@ -602,6 +624,30 @@ class Checker {
         tasks.push_back({&t, i, t.table.x.TexelCenter(at.x), t.table.y.TexelCenter(at.y),
                          t.table.z.TexelCenter(at.z), &refTexel_[kind][i]});
       }
+      // Where the reference is the table's own rule (the dielectric tables:
+      // dielectric_table.h) and the default one, the adaptive quadrature,
+      // is another, kIndependentTexels texels spread over the table by
+      // that one too (CheckIndependent): an independent rule still judges
+      // a sample (64 of a default glass_E's 23552 texels, 0.5 CPU-s).
+      const TableDefinition::CheckReference named =
+          def.ReferenceForCheck(t.statedErrorMax, options_.referenceTolerance);
+      if (named.estimator != def.ReferenceEstimator() &&
+          def.ReferenceEstimator() == Estimator::kAdaptiveQuadrature) {
+        const size_t step = std::max<size_t>(1, texels / kIndependentTexels);
+        for (size_t i = step / 2; i < texels; i += step) t.independentTexels.push_back(i);
+        t.independent.resize(t.independentTexels.size());
+        for (size_t k = 0; k < t.independentTexels.size(); ++k) {
+          const TexelIndex at = IndexOf(t.table, t.independentTexels[k]);
+          Task task{&t,
+                    t.independentTexels[k],
+                    t.table.x.TexelCenter(at.x),
+                    t.table.y.TexelCenter(at.y),
+                    t.table.z.TexelCenter(at.z),
+                    &t.independent[k]};
+          task.independent = true;
+          tasks.push_back(task);
+        }
+      }
       // Random points over the whole axis ranges, edges (where lookups clamp) included.
       // Their truth judges nothing: CheckPoints holds the lookup of the
       // table to the lookup of exact texels (the texel references above),
@@ -610,8 +656,15 @@ class Checker {
       // truth is therefore the panel rule at kPointTolerance (3 digits of
       // any deviation above 1e-6), not the reference's nested refinement:
       // 256 such points of E_avg were 3/4 of the check of the default set.
+      // A table whose definition names a tolerance for them (the dielectric
+      // tables, judged by their own panel rule: dielectric_table.h) gets the
+      // panel rule at that tolerance.
+      const double namedTolerance =
+          def.ReferenceForCheck(t.statedErrorMax, options_.referenceTolerance).pointTolerance;
       const bool panelPoints =
-          !t.table.is3D() && def.ReferenceEstimator() == Estimator::kAdaptiveQuadrature;
+          namedTolerance > 0.0 ||
+          (!t.table.is3D() && def.ReferenceEstimator() == Estimator::kAdaptiveQuadrature);
+      const double pointTolerance = namedTolerance > 0.0 ? namedTolerance : kPointTolerance;
       RandomStream random(HashValues({options_.seed, def.SeedId()}));
       points_[kind].resize(static_cast<size_t>(options_.randomPoints));
       for (RandomPoint &p : points_[kind]) {
@@ -620,7 +673,7 @@ class Checker {
                              : 0.0;
         p.z = t.table.is3D() ? t.table.z.min + (t.table.z.max - t.table.z.min) * random.NextDouble()
                              : 0.0;
-        tasks.push_back({&t, kPointTexel, p.x, p.y, p.z, &p.truth, panelPoints});
+        tasks.push_back({&t, kPointTexel, p.x, p.y, p.z, &p.truth, panelPoints, pointTolerance});
       }
       // The albedo-scaling furnace's grid: cell centres of a g x g grid
       // over the axes (mu = 0 itself, infinite for Charlie's sheen, is not
@@ -636,13 +689,15 @@ class Checker {
             p.y = t.table.y.min + (t.table.y.max - t.table.y.min) * (j + 0.5) / g;
           }
         for (RandomPoint &p : grid)
-          tasks.push_back({&t, kGridTexel, p.x, p.y, 0.0, &p.truth, true});
+          tasks.push_back({&t, kGridTexel, p.x, p.y, 0.0, &p.truth, true, 1e-10});
       }
     }
     std::atomic<size_t> done{0};
     // Most expensive first (E_avg integrates a whole row), for balance.
     const auto cost = [](const Task &task) {
-      return task.panel ? 0.0 : task.t->def->ReferenceCost();
+      return task.panel         ? 0.0
+             : task.independent ? 16.0 * task.t->def->ReferenceCost()
+                                : task.t->def->ReferenceCost();
     };
     std::stable_sort(tasks.begin(), tasks.end(),
                      [&](const Task &a, const Task &b) { return cost(a) > cost(b); });
@@ -652,8 +707,13 @@ class Checker {
         if (task.panel) {
           BakeSettings s = task.t->model;
           s.estimator = Estimator::kQuadrature;
-          s.tolerance = task.texel == kPointTexel ? kPointTolerance : 1e-10;
-          *task.out = task.t->def->EvaluateIntegrals(s, task.x, task.y);
+          s.tolerance = task.tolerance;
+          *task.out = task.t->table.is3D() ? task.t->def->Evaluate3D(s, task.x, task.y, task.z)
+                                           : task.t->def->EvaluateIntegrals(s, task.x, task.y);
+        } else if (task.independent) {
+          const BakeSettings s = IndependentSettings(*task.t);
+          *task.out = task.t->table.is3D() ? task.t->def->Evaluate3D(s, task.x, task.y, task.z)
+                                           : task.t->def->EvaluateIntegrals(s, task.x, task.y);
         } else {
           *task.out = Reference(*task.t, task.x, task.y, task.z);
         }
@@ -813,6 +873,39 @@ class Checker {
     } else {
       Add(name, "texels", CheckStatus::kPass, detail, realMax, worstAllowed, where(realIndex));
     }
+  }
+
+  // The sample of texels that the independent rule judges too, where the
+  // reference is the table's own rule (ComputeReferences): each within the
+  // table's stated maximum + the independent value's own bound, as
+  // CheckTexels holds every texel.
+  void CheckIndependent(const Loaded &t) {
+    if (t.independentTexels.empty()) return;
+    const Table &table = t.table;
+    Worst worst;
+    for (size_t k = 0; k < t.independentTexels.size(); ++k)
+      for (int c = 0; c < table.channels; ++c) {
+        const size_t i = t.independentTexels[k] * table.channels + c;
+        const double truth = t.independent[k].value[c];
+        if (!std::isfinite(truth)) continue;
+        const double real = std::abs(table.values[i] - truth);
+        const double allowed = std::max(t.statedErrorMax, t.Bound(i)) + t.independent[k].error[c] +
+                               (t.boundsCoverStorage ? 0.0 : FloatRounding(table.values[i]));
+        worst.Note(real, allowed, AtTexel(table, t.independentTexels[k]));
+      }
+    const std::string detail =
+        std::to_string(t.independentTexels.size()) +
+        " texels spread over the table also against its default reference, " +
+        t.def->QuadratureDescription(IndependentSettings(t)) +
+        " (every texel was judged by its own rule): max |table - truth| " + Short(worst.deviation) +
+        " at " + Where(worst.at);
+    if (worst.failed())
+      Add(Name(*t.def), "independent", CheckStatus::kFail,
+          "a value differs from the independent rule by " + Short(worst.excessDeviation) + " at " +
+              Where(worst.atExcess) + ", allowed " + Short(worst.excessAllowed) + ". " + detail,
+          worst.excessDeviation, worst.excessAllowed, worst.atExcess);
+    else
+      Add(Name(*t.def), "independent", CheckStatus::kPass, detail, worst.deviation, 0.0, worst.at);
   }
 
   void CheckPoints(const Loaded &t) {

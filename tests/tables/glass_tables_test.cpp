@@ -8,6 +8,7 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -304,6 +305,57 @@ TEST(GlassTables, CheckHoldsSliceLimitAndReciprocity) {
   // The untouched tables' claims still hold.
   EXPECT_EQ(statusOf(r, "spec_E", "slice"), CheckStatus::kPass);
   EXPECT_EQ(statusOf(r, "glass_E", "limit"), CheckStatus::kPass);
+  fs::remove_all(averages);
+  fs::remove_all(dir);
+}
+
+// check's reference for the dielectric tables is their own panel rule at
+// 1/16 of the stated errorMax (dielectric_table.h): a texel off the eta = 1
+// slice moved by 3x its bound (the largest one's: errorMax, so the move
+// exceeds every allowance) fails the texel check, in a 3D table and in an
+// average, while the untouched tables pass. The 3D tables' sample held to
+// the adaptive rule (here all 32 texels) catches it too.
+TEST(GlassTables, CheckFailsATexelMovedByThreeBounds) {
+  const fs::path dir = test::Scratch("glass_moved");
+  Bake(TableBake(dir, {"glass_E", "spec_E"}, 4, 2, 1e-6, {"bin"}));
+  const fs::path averages = test::Scratch("glass_moved_averages");
+  Bake(TableBake(averages, {"glass_Eavg", "spec_Eavg"}, 2, 2, 1e-6, {"bin"}));
+  CheckOptions quick;
+  quick.randomPoints = 2;
+  const auto texels = [](const CheckReport &r, const std::string &subject,
+                         const std::string &check = "texels") {
+    const CheckResult *c = Find(r, subject, check);
+    EXPECT_NE(c, nullptr) << subject << " " << check;
+    return c ? c->status : CheckStatus::kSkipped;
+  };
+  const CheckReport good = CheckBakedSet(dir.string(), quick);
+  for (const char *t : {"glass_E", "spec_E"}) {
+    EXPECT_EQ(texels(good, t), CheckStatus::kPass) << t;
+    EXPECT_EQ(texels(good, t, "independent"), CheckStatus::kPass) << t;
+  }
+  for (const char *t : {"glass_Eavg", "spec_Eavg"})
+    EXPECT_EQ(texels(CheckBakedSet(averages.string(), quick), t), CheckStatus::kPass) << t;
+  // The texel with the largest bound, moved up by 3x it.
+  const auto moveWorst = [](const fs::path &path) {
+    const Table table = ReadBinaryTable(path.string());
+    ASSERT_EQ(table.errors.size(), table.values.size());
+    const size_t at = static_cast<size_t>(
+        std::max_element(table.errors.begin(), table.errors.end()) - table.errors.begin());
+    ASSERT_GT(table.errors[at], 0.0);
+    PatchBin(path, at, static_cast<float>(table.values[at] + 3.0 * table.errors[at]));
+  };
+  moveWorst(dir / "glass_E.bin");
+  moveWorst(averages / "glass_Eavg.bin");
+  const CheckReport r = CheckBakedSet(dir.string(), quick);
+  const CheckReport a = CheckBakedSet(averages.string(), quick);
+  EXPECT_FALSE(r.passed());
+  EXPECT_FALSE(a.passed());
+  EXPECT_EQ(texels(r, "glass_E"), CheckStatus::kFail);
+  EXPECT_EQ(texels(a, "glass_Eavg"), CheckStatus::kFail);
+  EXPECT_EQ(texels(r, "spec_E"), CheckStatus::kPass);
+  EXPECT_EQ(texels(a, "spec_Eavg"), CheckStatus::kPass);
+  EXPECT_EQ(texels(r, "glass_E", "independent"), CheckStatus::kFail);
+  EXPECT_EQ(texels(r, "spec_E", "independent"), CheckStatus::kPass);
   fs::remove_all(averages);
   fs::remove_all(dir);
 }

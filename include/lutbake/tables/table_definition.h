@@ -266,6 +266,19 @@ class TableDefinition {
   // with: the adaptive quadrature, an independent method, unless the
   // definition says why not (and what judges it instead).
   virtual Estimator ReferenceEstimator() const { return Estimator::kAdaptiveQuadrature; }
+  // What `lutbake check` computes a texel's reference with, given the
+  // table's stated errorMax and --reference-tolerance: the estimator, the
+  // tolerance (what the panel rule is asked; check asks the adaptive one for
+  // 2 kQuadratureErrorFactor x it), and the panel rule's tolerance for the
+  // random points' truth, which judges nothing (0: check's own choice). The
+  // default: ReferenceEstimator() at 1/64 of errorMax, not below the option
+  // nor above 1e-6.
+  struct CheckReference {
+    Estimator estimator = Estimator::kAdaptiveQuadrature;
+    double tolerance = 1e-8;
+    double pointTolerance = 0.0;
+  };
+  virtual CheckReference ReferenceForCheck(double statedErrorMax, double optionTolerance) const;
   // Why the table cannot use an estimator ("" when it can): sheen has no
   // cosine-weighted sampler, for one.
   virtual std::string EstimatorProblem(Estimator) const { return ""; }
