@@ -585,8 +585,12 @@ class Checker {
   // The value at a point of a table's axes (a fitted table's integrated
   // channels; its fitted ones NaN).
   PointValue Reference(const Loaded &t, double x, double y, double z) const {
-    return t.table.is3D() ? t.def->Evaluate3D(ReferenceSettings(t), x, y, z)
-                          : t.def->EvaluateIntegrals(ReferenceSettings(t), x, y);
+    return ValueAt(t, ReferenceSettings(t), x, y, z);
+  }
+
+  // The table's integrated channels at a point of its axes under `s`.
+  static PointValue ValueAt(const Loaded &t, const BakeSettings &s, double x, double y, double z) {
+    return t.table.is3D() ? t.def->Evaluate3D(s, x, y, z) : t.def->EvaluateIntegrals(s, x, y);
   }
 
   // Every texel of every usable table, and the random points, in one
@@ -708,12 +712,9 @@ class Checker {
           BakeSettings s = task.t->model;
           s.estimator = Estimator::kQuadrature;
           s.tolerance = task.tolerance;
-          *task.out = task.t->table.is3D() ? task.t->def->Evaluate3D(s, task.x, task.y, task.z)
-                                           : task.t->def->EvaluateIntegrals(s, task.x, task.y);
+          *task.out = ValueAt(*task.t, s, task.x, task.y, task.z);
         } else if (task.independent) {
-          const BakeSettings s = IndependentSettings(*task.t);
-          *task.out = task.t->table.is3D() ? task.t->def->Evaluate3D(s, task.x, task.y, task.z)
-                                           : task.t->def->EvaluateIntegrals(s, task.x, task.y);
+          *task.out = ValueAt(*task.t, IndependentSettings(*task.t), task.x, task.y, task.z);
         } else {
           *task.out = Reference(*task.t, task.x, task.y, task.z);
         }
