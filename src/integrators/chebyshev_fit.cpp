@@ -504,6 +504,12 @@ FitResult FitPiecewiseChebyshev(const FitRequest &r) {
     maps = r.dims == 1 ? std::vector<FitMap>{FitMap::kLinear, FitMap::kSqrtX}
                        : std::vector<FitMap>{FitMap::kSqrtX, FitMap::kCorner};
   if (r.maps.empty() && r.xLo > 0.0) maps.push_back(FitMap::kLogX);
+  // The logarithmic maps need their arguments above 0 over the whole domain.
+  for (FitMap m : maps)
+    if ((m == FitMap::kLogX && !(r.xLo > 0.0)) ||
+        (m == FitMap::kLogXY && !(r.xLo + r.xShift > 0.0 && r.yLo > 0.0)))
+      throw std::invalid_argument(
+          "FitPiecewiseChebyshev: a logarithmic map needs a domain above 0");
   uint64_t evaluations = 0;
   // The shapes, fewest coefficients first: per map and grading, patches
   // and degrees per axis (a tight budget: equal degrees only). Each is fitted

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
 namespace lutbake {
 namespace {
@@ -122,6 +123,9 @@ TEST(ChebyshevFit, LogarithmicMapsInBothCoordinates) {
   }
   EXPECT_LE(worst, fit.certificate.maxError);
   EXPECT_GT(worst, fit.certificate.maxError / 20.0);
+  // log(r) at r = 0 would be -infinity: refused, not fitted to NaN.
+  r.yLo = 0.0;
+  EXPECT_THROW(FitPiecewiseChebyshev(r), std::invalid_argument);
 }
 
 TEST(ChebyshevFit, OneDimensionalAndBitIdenticalForAnyThreadCount) {
