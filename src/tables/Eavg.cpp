@@ -7,13 +7,60 @@
 // has density 2 mu); the quadrature integrates mu on panels graded toward
 // 0. check asserts E_avg in [0, 1], non-increasing in r, the average of E's
 // rows, and the Kulla-Conty furnace; a header bake of E and Eavg adds
-// kulla_conty.h.
+// kulla_conty.h, and shader code of the two the same functions (below).
+#include <algorithm>
+
 #include "lutbake/tables/bake.h"
+#include "lutbake/tables/shader_dialect.h"
 #include "microfacet_table.h"
 
 namespace lutbake {
 
 namespace {
+
+using source_text::Dialect;
+
+// The Kulla-Conty functions of any E and E_avg pair, in one of the shading
+// languages: the lobe, its albedo, its Fresnel colour and Schlick's F_avg.
+std::string KullaContyShaderCore(const Dialect &d) {
+  const std::string F = d.Float(), F3 = d.Float(3);
+  const std::string one3 = d.Vec({d.Lit(1.0), d.Lit(1.0), d.Lit(1.0)});
+  return "// Kulla-Conty multiple scattering (Kulla and Conty 2017), as kulla_conty.h.\n"
+         "// A single-scattering microfacet BRDF reflects E(mu_o, r) of the light (F = 1)\n"
+         "// and loses 1 - E to paths that bounce between microfacets; the lobe\n"
+         "//   f_ms(mu_o, mu_i, r) = (1 - E(mu_o, r)) (1 - E(mu_i, r)) / (pi (1 - E_avg(r))),\n"
+         "// E_avg(r) = 2 integral_0^1 E(mu, r) mu dmu, gives that energy back:\n"
+         "//   integral f_ms mu_i d(omega_i) = 1 - E(mu_o),\n"
+         "// so f + f_ms passes the white furnace. 0 where E_avg rounds to 1 (the mirror).\n" +
+         d.Function(F, "lutbake_f_ms", {{F, "E_o"}, {F, "E_i"}, {F, "Eavg"}},
+                    d.Let(F, "lost", d.Lit(1.0) + " - Eavg") +
+                        d.Let(F, "lobe",
+                              "max(" + d.Lit(1.0) + " - E_o, " + d.Lit(0.0) + ") * max(" +
+                                  d.Lit(1.0) + " - E_i, " + d.Lit(0.0) + ") / (" +
+                                  d.Lit(3.14159265358979) + " * max(lost, " + d.Lit(1e-30) + "))") +
+                        "  return " + d.Select("lost > " + d.Lit(0.0), "lobe", d.Lit(0.0)) +
+                        ";\n") +
+         "// The albedo of the lobe, integral f_ms cos over the hemisphere = 1 - E(mu_o):\n"
+         "// under a constant environment L the lobe adds L F_ms (1 - E(mu_o)).\n" +
+         d.Function(F, "lutbake_ms_albedo", {{F, "E_o"}},
+                    "  return max(" + d.Lit(1.0) + " - E_o, " + d.Lit(0.0) + ");\n") +
+         "// The Fresnel colour of the lobe, per channel: the light that leaves after any\n"
+         "// number of bounces, each reflecting F_avg and escaping with E_avg,\n"
+         "//   F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)),\n"
+         "// F_avg clamped to [0, 1] (the denominator is then at least E_avg > 0).\n" +
+         d.Function(F3, "lutbake_fresnel_ms", {{F3, "Favg"}, {F, "Eavg"}},
+                    d.Let(F3, "f",
+                          "clamp(Favg, " + d.Vec({d.Lit(0.0), d.Lit(0.0), d.Lit(0.0)}) + ", " +
+                              one3 + ")") +
+                        d.Let(F3, "denominator", one3 + " - f * (" + d.Lit(1.0) + " - Eavg)") +
+                        "  return f * f * Eavg / max(denominator, " +
+                        d.Vec({d.Lit(1e-30), d.Lit(1e-30), d.Lit(1e-30)}) + ");\n") +
+         "// F_avg of Schlick's Fresnel, exactly: 2 integral_0^1 F(mu) mu dmu\n"
+         "// = 20/21 F0 + 1/21 F90.\n" +
+         d.Function(
+             F3, "lutbake_favg_schlick", {{F3, "F0"}, {F3, "F90"}},
+             "  return F0 * " + d.Lit(20.0 / 21.0) + " + F90 * " + d.Lit(1.0 / 21.0) + ";\n");
+}
 
 class AverageAlbedo final : public MicrofacetTable {
  public:
@@ -57,6 +104,31 @@ class AverageAlbedo final : public MicrofacetTable {
     AddRoughnessNotes(&text);
     text.lookupComment = "Average albedo E_avg at perceptual roughness r.";
     return text;
+  }
+  // Where the set holds the E of the same model (E_beckmann beside
+  // Eavg_beckmann): the Kulla-Conty functions, and f_ms from the two
+  // textures.
+  std::vector<ShaderPiece> ShaderHelpers(const Dialect &d, const Table &avg,
+                                         const std::vector<Table> &set) const override {
+    const std::string ofName = Relations().averageOf;
+    const std::string suffix = avg.Name().substr(std::string(Name()).size());
+    const auto of = std::find_if(set.begin(), set.end(), [&](const Table &t) {
+      return t.definition && t.definition->Name() == ofName && t.Name() == ofName + suffix;
+    });
+    if (of == set.end()) return {};
+    const std::string F = d.Float();
+    auto params = d.TextureParams(of->Name() + "_texture");
+    for (const auto &p : d.TextureParams(avg.Name() + "_texture")) params.push_back(p);
+    params.insert(params.end(), {{F, "mu_o"}, {F, "mu_i"}, {F, "r"}});
+    const std::string e =
+        "lutbake_sample_" + of->Name() + "(" + d.TextureArgs(of->Name() + "_texture");
+    return {{2, "kulla_conty", KullaContyShaderCore(d)},
+            {2, "kulla_conty_" + avg.Name(),
+             "// f_ms from the textures of " + of->Name() + " and " + avg.Name() + ".\n" +
+                 d.Function(F, "lutbake_f_ms_" + of->Name(), params,
+                            "  return lutbake_f_ms(" + e + ", mu_o, r), " + e + ", mu_i, r),\n" +
+                                "                      lutbake_sample_" + avg.Name() + "(" +
+                                d.TextureArgs(avg.Name() + "_texture") + ", r));\n")}};
   }
 };
 

@@ -6,6 +6,7 @@
 // f the microfacet BRDF of table E with F = 1, so A + B = E (check asserts
 // it). Axes as E's, 128 x 128 by default; channels R = A, G = B.
 #include "lutbake/tables/bake.h"
+#include "lutbake/tables/shader_dialect.h"
 #include "microfacet_table.h"
 
 namespace lutbake {
@@ -44,6 +45,20 @@ class SplitSum final : public MuRoughnessTable {
         "// specular albedo = F0 A + F90 B.\n";
     text.lookupComment = "Split-sum terms {A, B} at view cosine mu and perceptual roughness r.";
     return text;
+  }
+  std::vector<ShaderPiece> ShaderHelpers(const source_text::Dialect &d, const Table &,
+                                         const std::vector<Table> &) const override {
+    const std::string F2 = d.Float(2), F3 = d.Float(3);
+    return {
+        {0, "split_sum",
+         "// Split-sum specular albedo (table " + std::string(Name()) +
+             ", AB = its lookup at (NdotV, r)): with Schlick's\n"
+             "// Fresnel F = F0 + (F90 - F0) (1 - v.h)^5 the directional albedo is\n"
+             "//   integral f F cos = F0 A + F90 B,\n"
+             "// A = integral (f/F) (1 - (1 - v.h)^5) cos, B = integral (f/F) (1 - v.h)^5 cos.\n"
+             "// Times the prefiltered radiance, the split-sum image-based specular.\n" +
+             d.Function(F3, "lutbake_specular_albedo", {{F2, "AB"}, {F3, "F0"}, {F3, "F90"}},
+                        "  return F0 * AB.x + F90 * AB.y;\n")}};
   }
 };
 

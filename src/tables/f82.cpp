@@ -26,6 +26,7 @@
 // levels, the weight (o.h) (1 - o.h)^6 added to its kernel), the adaptive
 // reference, or E's sampled estimators (microfacet_table.cpp).
 #include "lutbake/tables/bake.h"
+#include "lutbake/tables/shader_dialect.h"
 #include "microfacet_table.h"
 
 namespace lutbake {
@@ -88,6 +89,32 @@ class F82Term final : public MuRoughnessTable {
              "}\n\n";
     };
     return text;
+  }
+  // The same two functions in the shading languages, where the set holds
+  // dfg for A and B.
+  std::vector<ShaderPiece> ShaderHelpers(const source_text::Dialect &d, const Table &,
+                                         const std::vector<Table> &set) const override {
+    if (!FindRole(set, PlanRole::kImageBasedLighting)) return {};
+    const std::string F = d.Float(), F2 = d.Float(2), F3 = d.Float(3);
+    const std::string one3 = d.Vec({d.Lit(1.0), d.Lit(1.0), d.Lit(1.0)});
+    const double y = 6.0 / 7.0, y5 = y * y * y * y * y, y6 = y5 * y;
+    return {
+        {1, "f82",
+         "// The F82-tint Fresnel of metals (Kutz et al. 2021; OpenPBR's metal):\n"
+         "//   F(c) = F0 + (F90 - F0) (1 - c)^5 - a c (1 - c)^6,  c = v.h,\n"
+         "// per colour channel, with\n"
+         "//   a = Schlick(F0, 1/7) (1 - tint) / ((1/7) (1 - 1/7)^6),\n"
+         "//   Schlick(F0, c) = F0 + (1 - F0) (1 - c)^5  (F90 = 1),\n"
+         "// so that F(1/7) = tint Schlick(F0, 1/7); tint is the F82 tint in [0, 1].\n" +
+             d.Function(F3, "lutbake_f82_tint_a", {{F3, "F0"}, {F3, "tint"}},
+                        d.Let(F3, "schlick", "F0 + (" + one3 + " - F0) * " + d.Lit(y5)) +
+                            "  return schlick * (" + one3 + " - tint) * " + d.Lit(7.0 / y6) +
+                            ";\n") +
+             "// Its specular albedo: F0 A + F90 B - a C, with A, B from dfg and C from f82 at\n"
+             "// the same (NdotV, r).\n" +
+             d.Function(F3, "lutbake_specular_albedo_f82",
+                        {{F2, "AB"}, {F, "C"}, {F3, "F0"}, {F3, "F90"}, {F3, "a"}},
+                        "  return F0 * AB.x + F90 * AB.y - a * C;\n")}};
   }
 };
 

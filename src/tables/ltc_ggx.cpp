@@ -21,6 +21,7 @@
 #include <stdexcept>
 
 #include "definitions.h"
+#include "ltc_area_light_code.h"
 #include "ltc_table.h"
 #include "lutbake/integrators/ltc_fit.h"
 #include "lutbake/tables/bake.h"
@@ -96,6 +97,14 @@ class LtcGgx final : public LtcTableDefinition<MuRoughnessTable> {
     text.lookupComment =
         "{m00, m20, m02, m22, magnitude, fresnel} at view cosine mu and perceptual roughness r.";
     return text;
+  }
+  // Rectangular area lights (ltc_area_light_code.h): the polygon integral
+  // once, then this table's rectangle.
+  std::vector<ShaderPiece> ShaderHelpers(const source_text::Dialect &d, const Table &table,
+                                         const std::vector<Table> &) const override {
+    if (table.channels != 6) return {};
+    return {{4, "ltc_polygon", LtcPolygonFunctions(d)},
+            {4, "ltc_rectangle_" + table.Name(), LtcRectangleFunctions(d, table)}};
   }
 };
 

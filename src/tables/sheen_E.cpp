@@ -29,6 +29,7 @@
 #include "lutbake/integrators/sheen_estimator.h"
 #include "lutbake/integrators/sheen_quadrature.h"
 #include "lutbake/tables/bake.h"
+#include "lutbake/tables/shader_dialect.h"
 #include "sampled_texel.h"
 #include "sheen_table.h"
 
@@ -154,6 +155,26 @@ class SheenAlbedo final : public SheenTable {
              "}\n\n";
     };
     return text;
+  }
+  // The same scaling in the shading languages, from E_v (and E_l) looked up.
+  std::vector<ShaderPiece> ShaderHelpers(const source_text::Dialect &d, const Table &,
+                                         const std::vector<Table> &) const override {
+    const std::string F = d.Float(), F3 = d.Float(3);
+    const std::string max3 = "max(max(sheenColor.x, sheenColor.y), sheenColor.z)";
+    return {{3, "sheen_albedo_scaling",
+             "// glTF KHR_materials_sheen's albedo scaling of the layers under a sheen of\n"
+             "// colour sheenColor: with the view's albedo E_v = sheen_E(NdotV, sheenRoughness),\n"
+             "//   albedo_scaling = 1 - max3(sheenColor) E_v,\n"
+             "// and with the light's E_l = sheen_E(NdotL, sheenRoughness) too (punctual lights),\n"
+             "//   albedo_scaling = min(1 - max3(sheenColor) E_v, 1 - max3(sheenColor) E_l).\n"
+             "// Shade sheenColor f_sheen + albedo_scaling f_base. Unclamped, as the extension\n"
+             "// states it (E exceeds 1 at grazing views of smooth sheen).\n" +
+                 d.Function(F, "lutbake_sheen_albedo_scaling", {{F3, "sheenColor"}, {F, "E_v"}},
+                            "  return " + d.Lit(1.0) + " - " + max3 + " * E_v;\n") +
+                 d.Function(F, "lutbake_sheen_albedo_scaling2",
+                            {{F3, "sheenColor"}, {F, "E_v"}, {F, "E_l"}},
+                            "  return min(lutbake_sheen_albedo_scaling(sheenColor, E_v),\n"
+                            "             lutbake_sheen_albedo_scaling(sheenColor, E_l));\n")}};
   }
 };
 

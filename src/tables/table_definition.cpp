@@ -63,4 +63,10 @@ uint64_t PointSeed(uint64_t tableSeedId, double x, double y, uint64_t seed) {
   return HashValues({tableSeedId, xBits, yBits, seed});
 }
 
+const TableDefinition *FindRole(const std::vector<Table> &set, PlanRole role) {
+  for (const Table &t : set)
+    if (t.definition && t.definition->Role() == role) return t.definition;
+  return nullptr;
+}
+
 }  // namespace lutbake

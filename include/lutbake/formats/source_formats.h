@@ -35,10 +35,9 @@
 #include <vector>
 
 #include "lutbake/formats/writer.h"
+#include "lutbake/tables/shader_dialect.h"
 
 namespace lutbake {
-
-enum class ShaderLanguage { kGlsl, kHlsl, kWgsl, kMsl };
 
 // "glsl", "hlsl", "wgsl", "msl".
 const char *ToString(ShaderLanguage language);

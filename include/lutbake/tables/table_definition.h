@@ -18,8 +18,9 @@
 //                closed form, and relations to other tables (channels that
 //                sum to another table, an average over another's rows, a
 //                furnace);
-//   uses         the role a bake plan needs it for, and the header's notes
-//                and helper functions.
+//   uses         the role a bake plan needs it for, the header's notes and
+//                helper functions, and the shader helpers (lutbake.<ext>)
+//                that use its texture lookups.
 // To add a table: write its definition (one .cpp under src/tables/, using
 // the integrators below), add it to the registry, and test it.
 #pragma once
@@ -174,6 +175,27 @@ struct HeaderText {
   // Inline functions after lookup_<name>; `lookup` is that function's name.
   std::function<std::string(const std::string &lookup)> helpers;
 };
+
+// A piece of the shader code file lutbake.<ext> (--shader): helper
+// functions of a table, in one of the four languages (source_text::Dialect).
+// The file holds every table's texture lookup, then the pieces of all its
+// tables ordered by `order` (the split sum 0, the F82 term 1, Kulla-Conty 2,
+// sheen 3, area lights 4), tables in the set's order within one `order`;
+// a piece whose `key` an earlier piece had is left out, so that functions
+// several tables share (the Kulla-Conty core, the LTC polygon integral) are
+// written once.
+struct ShaderPiece {
+  int order = 0;
+  std::string key;
+  std::string code;
+};
+
+namespace source_text {
+class Dialect;
+}
+
+// The first table of `set` whose definition has `role`, or nullptr.
+const TableDefinition *FindRole(const std::vector<Table> &set, PlanRole role);
 
 class TableDefinition {
  public:
@@ -355,6 +377,15 @@ class TableDefinition {
   // ---- uses -----------------------------------------------------------
   virtual PlanRole Role() const { return PlanRole::kNone; }
   virtual HeaderText Header(const Table &table) const = 0;
+  // The shader helpers of `table` (this definition's) in a file that holds
+  // the tables `set`, this one among them: a helper that needs another
+  // table (Kulla-Conty's E beside Eavg, the F82 term beside dfg) is given
+  // only when that table is in the set. None by default.
+  virtual std::vector<ShaderPiece> ShaderHelpers(const source_text::Dialect &,
+                                                 const Table & /*table*/,
+                                                 const std::vector<Table> & /*set*/) const {
+    return {};
+  }
 };
 
 // Every table, in the order the command line lists them.

@@ -6,8 +6,8 @@
 
 #include <string>
 
+#include "lutbake/tables/shader_dialect.h"
 #include "lutbake/tables/table.h"
-#include "source_text.h"
 
 namespace lutbake {
 
