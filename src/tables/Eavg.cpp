@@ -10,7 +10,10 @@
 // kulla_conty.h, and shader code of the two the same functions (below).
 #include <algorithm>
 
+#include "lutbake/core/math.h"
 #include "lutbake/tables/bake.h"
+#include "lutbake/tables/lookup.h"
+#include "lutbake/tables/set_claim.h"
 #include "lutbake/tables/shader_dialect.h"
 #include "microfacet_table.h"
 
@@ -62,6 +65,105 @@ std::string KullaContyShaderCore(const Dialect &d) {
              "  return F0 * " + d.Lit(20.0 / 21.0) + " + F90 * " + d.Lit(1.0 / 21.0) + ";\n");
 }
 
+// The white furnace of the Kulla-Conty lobe built from the baked E and
+// E_avg through bilinear lookups, on a fine (mu, r) grid:
+//   E(mu) + integral f_ms cos = E_o + (1 - E_o) (1 - E~) / (1 - E_avg),
+//   E~ = 2 integral_0^1 E_lookup(mu_i) mu_i dmu_i (exact for a piecewise-linear lookup),
+// so the deviation from 1 is d = (1 - E_o) (E_avg - E~) / (1 - E_avg).
+class KullaContyFurnace final : public SetClaim {
+ public:
+  int Order() const override { return 2; }
+  void Judge(const CheckedTable &self, ClaimContext &set) const override {
+    using namespace claim_text;
+    const std::string &ofName = averaged_;
+    const CheckedTable &average = self;
+
+    const CheckedTable *e = set.Usable(ofName), *a = &average;
+    if (!e || !a->usable) return;
+    const std::string subject = ofName + "+" + a->def->Name() + set.Suffix();
+    if (!set.SameModel(*e, *a, subject, "furnace")) return;
+    const Table &te = e->table, &ta = a->table;
+    if (te.x.min != 0.0 || te.x.max != 1.0) {
+      set.Add(subject, "furnace", ClaimStatus::kSkipped,
+              "E does not span mu in [0, 1], so integral f_ms cos cannot be formed");
+      return;
+    }
+    const int g = std::max(2, set.FurnaceGrid());
+    // The roughness range both tables cover.
+    const double rLo = std::max(te.y.min, ta.x.min), rHi = std::min(te.y.max, ta.x.max);
+    const double errE = e->statedErrorMax, errA = a->statedErrorMax;
+    const double refErrorE = *std::max_element(e->refError.begin(), e->refError.end());
+    double worst = 0.0, worstRef = 0.0, worstExcess = -1.0, excessValue = 0, excessAllowed = 0;
+    std::vector<std::pair<std::string, double>> at, atRef, atExcess;
+    int notJudged = 0, undefined = 0;
+    double notJudgedBelow = -1.0, undefinedBelow = -1.0;
+    for (int j = 0; j < g; ++j) {
+      const double r = rLo + (rHi - rLo) * j / (g - 1);
+      const double avg = Lookup(ta, r, 0.0, 0), avgRef = Lookup(ta, a->ref, r, 0.0, 0);
+      const double mix = LookupMuAverage(te, te.values, r, 0);
+      const double mixRef = LookupMuAverage(te, e->ref, r, 0);
+      const double epsA = errA + FloatRounding(avg) + Lookup(ta, a->refError, r, 0.0, 0);
+      const double epsE = errE + FloatRounding(1.0) + refErrorE;
+      // E_avg = 1 (it rounds there as r -> 0 in float): f_ms is 0 / 0 and an
+      // engine must guard the division. Reported, not judged.
+      if (!(1.0 - avg > 0.0) || !(1.0 - avgRef > 0.0)) {
+        undefined += g;
+        undefinedBelow = std::max(undefinedBelow, r);
+        continue;
+      }
+      // Where 1 - E_avg is within ten times E_avg's error the lobe's
+      // normalisation is not determined by the table: the deviation is
+      // reported but not judged against exact texels.
+      const bool judged = 1.0 - avg > 10.0 * epsA;
+      if (!judged) {
+        notJudged += g;
+        notJudgedBelow = std::max(notJudgedBelow, r);
+      }
+      for (int i = 0; i < g; ++i) {
+        const double mu = static_cast<double>(i) / (g - 1);
+        const double eo = Lookup(te, mu, r, 0), eoRef = Lookup(te, e->ref, mu, r, 0);
+        const double q = (avg - mix) / (1.0 - avg);
+        const double d = (1.0 - eo) * q;
+        const double dRef = (1.0 - eoRef) * (avgRef - mixRef) / (1.0 - avgRef);
+        if (std::abs(d) > worst) worst = std::abs(d), at = {{"mu", mu}, {"roughness", r}};
+        if (std::abs(dRef) > worstRef)
+          worstRef = std::abs(dRef), atRef = {{"mu", mu}, {"roughness", r}};
+        if (!judged) continue;
+        // First-order propagation of the bounds of E_o, E~ and E_avg, with
+        // 20% for the second-order terms (epsA < (1 - E_avg) / 10 here).
+        const double allowed = 1.2 * (std::abs(q) * epsE + (1.0 - eo) / (1.0 - avg) * epsE +
+                                      (1.0 - eo) * std::abs(1.0 - mix) / Sqr(1.0 - avg) * epsA);
+        const double excess = std::abs(d - dRef) - allowed;
+        if (excess > worstExcess)
+          worstExcess = excess, excessValue = std::abs(d - dRef), excessAllowed = allowed,
+          atExcess = {{"mu", mu}, {"roughness", r}};
+      }
+    }
+    std::string detail = "E + integral f_ms cos - 1 over " + std::to_string(g) + " x " +
+                         std::to_string(g) + " (mu, r) in [0, 1] x [" + Short(rLo) + ", " +
+                         Short(rHi) + "]: max |deviation| " + Short(worst) + " at " + Where(at) +
+                         "; exact texels at the same places give " + Short(worstRef) + " at " +
+                         Where(atRef);
+    if (notJudged > 0)
+      detail += "; " + std::to_string(notJudged) + " points with r <= " + Short(notJudgedBelow) +
+                " not judged against exact texels (1 - E_avg within 10x E_avg's error)";
+    if (undefined > 0)
+      detail += "; E_avg is 1 at r <= " + Short(undefinedBelow) +
+                ": f_ms is 0 / 0 there and an engine must guard it";
+    if (worstExcess > 0.0)
+      set.Add(subject, "furnace", ClaimStatus::kFail,
+              "the baked deviation departs from that of exact texels by " + Short(excessValue) +
+                  " at " + Where(atExcess) + ", more than the " + Short(excessAllowed) +
+                  " the tables' bounds allow. " + detail,
+              excessValue, excessAllowed, atExcess);
+    else
+      set.Add(subject, "furnace", ClaimStatus::kPass, detail, worst, 0.0, at);
+  }
+
+ private:
+  std::string averaged_ = "E";
+};
+
 class AverageAlbedo final : public MicrofacetTable {
  public:
   const char *Name() const override { return "Eavg"; }
@@ -97,6 +199,9 @@ class AverageAlbedo final : public MicrofacetTable {
     r.averageOf = "E";
     r.kullaConty = true;
     return r;
+  }
+  std::vector<std::shared_ptr<const SetClaim>> Claims() const override {
+    return {AverageOfClaim("E"), std::make_shared<KullaContyFurnace>()};
   }
   PlanRole Role() const override { return PlanRole::kEnergyCompensation; }
   HeaderText Header(const Table &) const override {

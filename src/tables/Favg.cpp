@@ -46,6 +46,44 @@ PointCoordinate Coordinate(const char *option, double min, double max, const cha
   return c;
 }
 
+// The Fresnel model part: option fresnel, metadata ndf and smith "none"
+// and fresnel; read back from the metadata together with the axes each
+// Fresnel model's table has (F0; eta; eta and k; F0 and tint).
+class FresnelPart final : public TableModel {
+ public:
+  std::vector<std::string> Options() const override { return {"fresnel"}; }
+  Metadata Records(const BakeSettings &s) const override {
+    return {{"ndf", "none"}, {"smith", "none"}, {"fresnel", std::string(ToString(s.fresnel))}};
+  }
+  std::string Alpha(const BakeSettings &) const override { return "n/a"; }
+  std::string Describe(const BakeSettings &s) const override {
+    return "fresnel " + std::string(ToString(s.fresnel));
+  }
+  void Read(const Table &table, BakeSettings *s,
+            std::vector<std::string> *problems) const override {
+    const std::string fresnel = RequiredMetadata(table, "fresnel", problems);
+    if (fresnel == "schlick" && table.x.name == "F0" && !table.is2D() && table.x.min >= 0.0 &&
+        table.x.max <= 1.0)
+      s->fresnel = FresnelModel::kSchlick;
+    else if (fresnel == "dielectric" && table.x.name == "eta" && !table.is2D() &&
+             table.x.min >= 0.0)
+      s->fresnel = FresnelModel::kDielectric;
+    else if (fresnel == "conductor" && table.x.name == "eta" && table.y.name == "k" &&
+             table.x.min >= 0.0 && table.y.min >= 0.0)
+      s->fresnel = FresnelModel::kConductor;
+    else if (fresnel == "f82" && table.x.name == "F0" && table.y.name == "tint" &&
+             table.x.min >= 0.0 && table.x.max <= 1.0 && table.y.min >= 0.0 && table.y.max <= 1.0)
+      s->fresnel = FresnelModel::kF82;
+    else
+      problems->push_back("fresnel '" + fresnel + "' with axes " + table.x.name + ", " +
+                          (table.y.name.empty() ? "none" : table.y.name) +
+                          " is not a Favg lutbake writes");
+  }
+  bool Same(const BakeSettings &a, const BakeSettings &b) const override {
+    return a.fresnel == b.fresnel;
+  }
+};
+
 class FresnelAverage final : public TableDefinition {
  public:
   const char *Name() const override { return "Favg"; }
@@ -82,42 +120,18 @@ class FresnelAverage final : public TableDefinition {
   }
   std::vector<std::string> CoordinateOptions() const override { return {"f0", "eta", "k", "tint"}; }
 
-  std::vector<std::string> ModelOptions() const override { return {"fresnel"}; }
-  Metadata ModelMetadata(const BakeSettings &s) const override {
-    return {{"ndf", "none"}, {"smith", "none"}, {"fresnel", std::string(ToString(s.fresnel))}};
-  }
-  std::string AlphaMetadata(const BakeSettings &) const override { return "n/a"; }
-  std::string DescribeModel(const BakeSettings &s) const override {
-    return "fresnel " + std::string(ToString(s.fresnel));
+  const TableModel &ModelPart() const override {
+    static const FresnelPart model;
+    return model;
   }
   Metadata PointLabels(const BakeSettings &s) const override {
     return {{"fresnel", std::string(ToString(s.fresnel))}};
   }
   bool ReadModel(const Table &table, BakeSettings *s,
                  std::vector<std::string> *problems) const override {
-    const std::string fresnel = RequiredMetadata(table, "fresnel", problems);
-    if (fresnel == "schlick" && table.x.name == "F0" && !table.is2D() && table.x.min >= 0.0 &&
-        table.x.max <= 1.0)
-      s->fresnel = FresnelModel::kSchlick;
-    else if (fresnel == "dielectric" && table.x.name == "eta" && !table.is2D() &&
-             table.x.min >= 0.0)
-      s->fresnel = FresnelModel::kDielectric;
-    else if (fresnel == "conductor" && table.x.name == "eta" && table.y.name == "k" &&
-             table.x.min >= 0.0 && table.y.min >= 0.0)
-      s->fresnel = FresnelModel::kConductor;
-    else if (fresnel == "f82" && table.x.name == "F0" && table.y.name == "tint" &&
-             table.x.min >= 0.0 && table.x.max <= 1.0 && table.y.min >= 0.0 && table.y.max <= 1.0)
-      s->fresnel = FresnelModel::kF82;
-    else {
-      problems->push_back("fresnel '" + fresnel + "' with axes " + table.x.name + ", " +
-                          (table.y.name.empty() ? "none" : table.y.name) +
-                          " is not a Favg lutbake writes");
-      return false;
-    }
-    return true;
-  }
-  bool SameModel(const BakeSettings &a, const BakeSettings &b) const override {
-    return a.fresnel == b.fresnel;
+    const size_t before = problems->size();
+    ModelPart().Read(table, s, problems);
+    return problems->size() == before;
   }
 
   bool Sampled() const override { return false; }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "diffuse_model_part.h"
 #include "lutbake/tables/bake.h"
 #include "lutbake/tables/table_definition.h"
 
@@ -27,20 +28,15 @@ class BurleyModelTable : public TableDefinition {
     r.accepted = "comma-separated numbers in [0, 1] (perceptual roughness)";
     return {mu, r};
   }
-  std::vector<std::string> ModelOptions() const override { return {}; }
-  Metadata ModelMetadata(const BakeSettings &) const override {
-    return {{"model", kModel}, {"reflectance", "1"}};
+  const TableModel &ModelPart() const override {
+    static const DiffuseModel model(
+        kModel, "n/a: perceptualRoughness r enters F_D90 = 0.5 + 2 r cos^2(theta_d) alone");
+    return model;
   }
-  std::string AlphaMetadata(const BakeSettings &) const override {
-    return "n/a: perceptualRoughness r enters F_D90 = 0.5 + 2 r cos^2(theta_d) alone";
-  }
-  std::string DescribeModel(const BakeSettings &) const override { return kModel; }
-  bool ReadModel(const Table &table, BakeSettings *,
+  bool ReadModel(const Table &table, BakeSettings *s,
                  std::vector<std::string> *problems) const override {
     const size_t before = problems->size();
-    const std::string model = RequiredMetadata(table, "model", problems);
-    if (!model.empty() && model != kModel)
-      problems->push_back("model '" + model + "', expected '" + kModel + "'");
+    ModelPart().Read(table, s, problems);
     if (table.x.name != "mu" || table.x.min < 0.0 || table.x.max > 1.0)
       problems->push_back("the x axis is not mu within [0, 1]");
     if (!table.is2D() || table.y.name != "perceptualRoughness" || table.y.min < 0.0 ||
@@ -48,7 +44,6 @@ class BurleyModelTable : public TableDefinition {
       problems->push_back("the y axis is not perceptualRoughness within [0, 1]");
     return problems->size() == before;
   }
-  bool SameModel(const BakeSettings &, const BakeSettings &) const override { return true; }
 
  protected:
   static constexpr const char *kModel = "burley diffuse (disney 2012)";

@@ -6,12 +6,68 @@
 // f the microfacet BRDF of table E with F = 1, so A + B = E (check asserts
 // it). Axes as E's, 128 x 128 by default; channels R = A, G = B.
 #include "lutbake/tables/bake.h"
+#include "lutbake/tables/lookup.h"
+#include "lutbake/tables/set_claim.h"
 #include "lutbake/tables/shader_dialect.h"
 #include "microfacet_table.h"
 
 namespace lutbake {
 
 namespace {
+
+using namespace claim_text;
+
+// A + B = E at E's texel centres, dfg interpolated there: within what
+// exact texels give, the stated bounds and float rounding.
+class SumsTo final : public SetClaim {
+ public:
+  int Order() const override { return 0; }
+  void Judge(const CheckedTable &self, ClaimContext &set) const override {
+    const std::string &sumName = sum_;
+    const CheckedTable &channels = self;
+
+    const CheckedTable *e = set.Usable(sumName), *d = &channels;
+    if (!e || !d->usable) return;
+    const std::string subject = sumName + "+" + d->def->Name() + set.Suffix();
+    if (!set.SameModel(*e, *d, subject, "identity")) return;
+    const Table &te = e->table, &td = d->table;
+    double worst = 0.0, worstExcess = -1.0, excessValue = 0, excessAllowed = 0;
+    std::vector<std::pair<std::string, double>> at, atExcess;
+    for (int y = 0; y < te.height(); ++y)
+      for (int x = 0; x < te.width(); ++x) {
+        const double mu = te.x.TexelCenter(x), r = te.y.TexelCenter(y);
+        const size_t i = te.index(x, y, 0);
+        const double sum = Lookup(td, mu, r, 0) + Lookup(td, mu, r, 1);
+        const double dev = std::abs(sum - te.values[i]);
+        // What exact texels give: the interpolation error of A + B at this point.
+        const double exactDev =
+            std::abs(Lookup(td, d->ref, mu, r, 0) + Lookup(td, d->ref, mu, r, 1) - e->ref[i]);
+        const double allowed = exactDev + 2.0 * d->statedErrorMax + e->statedErrorMax +
+                               Lookup(td, d->refError, mu, r, 0) +
+                               Lookup(td, d->refError, mu, r, 1) + e->refError[i] +
+                               2.0 * FloatRounding(sum) + FloatRounding(te.values[i]);
+        if (dev > worst) worst = dev, at = At(te, mu, r);
+        if (dev - allowed > worstExcess)
+          worstExcess = dev - allowed, excessValue = dev, excessAllowed = allowed,
+          atExcess = At(te, mu, r);
+      }
+    const std::string where =
+        "at E's " + std::to_string(te.width() * te.height()) + " texel centres (dfg interpolated)";
+    if (worstExcess > 0.0)
+      set.Add(subject, "identity", ClaimStatus::kFail,
+              "A + B - E = " + Short(excessValue) + " at " + Where(atExcess) + ", more than the " +
+                  Short(excessAllowed) + " that the tables' bounds and interpolation allow (" +
+                  where + ")",
+              excessValue, excessAllowed, atExcess);
+    else
+      set.Add(subject, "identity", ClaimStatus::kPass,
+              "A + B = E " + where + ": max |A + B - E| " + Short(worst) + " at " + Where(at),
+              worst, 0.0, at);
+  }
+
+ private:
+  std::string sum_ = "E";
+};
 
 class SplitSum final : public MuRoughnessTable {
  public:
@@ -31,10 +87,8 @@ class SplitSum final : public MuRoughnessTable {
   ValueClaim Range(const BakeSettings &) const override {
     return {0.0, 1.0, true, "A, B >= 0 and A + B <= 1"};
   }
-  TableRelations Relations() const override {
-    TableRelations r;
-    r.channelsSumTo = "E";
-    return r;
+  std::vector<std::shared_ptr<const SetClaim>> Claims() const override {
+    return {std::make_shared<SumsTo>()};
   }
   PlanRole Role() const override { return PlanRole::kImageBasedLighting; }
   HeaderText Header(const Table &) const override {

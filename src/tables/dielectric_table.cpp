@@ -8,6 +8,7 @@
 #include "lutbake/integrators/gauss_kronrod.h"
 #include "lutbake/models/ndf.h"
 #include "lutbake/tables/bake.h"
+#include "lutbake/tables/set_claim.h"
 #include "microfacet_table.h"
 #include "sampled_texel.h"
 
@@ -21,29 +22,53 @@ constexpr double kMaterialEtas[] = {1.33, 1.5, 2.42};
 
 }  // namespace
 
-Metadata DielectricTable::ModelMetadata(const BakeSettings &s) const {
-  const bool transmission = Lobes() == DielectricLobes::kReflectionAndTransmission;
-  return {
-      {"ndf", std::string(ToString(s.ndf))},
-      {"smith", std::string(ToString(s.smith))},
-      {"fresnel", "dielectric (exact, unpolarised, at o.h)"},
-      {"lobes", std::string(ToString(Lobes()))},
-      {"transmission", transmission ? "the fraction of the energy arriving along o that passes: "
-                                      "without the eta^2 radiance factor"
-                                    : "none"}};
-}
+namespace {
 
-std::string DielectricTable::DescribeModel(const BakeSettings &s) const {
-  return std::string(ToString(s.ndf)) + " " + std::string(ToString(s.smith)) + ", " +
-         std::string(ToString(Lobes()));
+class Dielectric final : public TableModel {
+ public:
+  explicit Dielectric(DielectricLobes lobes) : lobes_(lobes) {}
+  std::vector<std::string> Options() const override { return MicrofacetModel().Options(); }
+  Metadata Records(const BakeSettings &s) const override {
+    const bool transmission = lobes_ == DielectricLobes::kReflectionAndTransmission;
+    Metadata m = MicrofacetModel().Records(s);
+    m.back().second = "dielectric (exact, unpolarised, at o.h)";  // fresnel
+    m.emplace_back("lobes", std::string(ToString(lobes_)));
+    m.emplace_back("transmission", transmission
+                                       ? "the fraction of the energy arriving along o that "
+                                         "passes: without the eta^2 radiance factor"
+                                       : "none");
+    return m;
+  }
+  std::string Alpha(const BakeSettings &s) const override { return MicrofacetModel().Alpha(s); }
+  std::string Describe(const BakeSettings &s) const override {
+    return MicrofacetModel().Describe(s) + ", " + std::string(ToString(lobes_));
+  }
+  void Read(const Table &table, BakeSettings *s,
+            std::vector<std::string> *problems) const override {
+    MicrofacetModel().Read(table, s, problems);
+    if (RequiredMetadata(table, "lobes", problems) != ToString(lobes_))
+      problems->push_back("lobes is not '" + std::string(ToString(lobes_)) + "'");
+  }
+  bool Same(const BakeSettings &a, const BakeSettings &b) const override {
+    return MicrofacetModel().Same(a, b);
+  }
+
+ private:
+  DielectricLobes lobes_;
+};
+
+}  // namespace
+
+const TableModel &DielectricModel(DielectricLobes lobes) {
+  static const Dielectric reflection(DielectricLobes::kReflection),
+      both(DielectricLobes::kReflectionAndTransmission);
+  return lobes == DielectricLobes::kReflection ? reflection : both;
 }
 
 bool DielectricTable::ReadModel(const Table &table, BakeSettings *s,
                                 std::vector<std::string> *problems) const {
   const size_t before = problems->size();
-  ReadNdfSmithModel(table, s, problems);
-  if (RequiredMetadata(table, "lobes", problems) != ToString(Lobes()))
-    problems->push_back("lobes is not '" + std::string(ToString(Lobes())) + "'");
+  ModelPart().Read(table, s, problems);
   // 3D: (mu, r, eta); the averages: (r, eta).
   const bool threeD = PlannedRoughnessAxis() == 1;
   const Axis &r = threeD ? table.y : table.x;
@@ -296,8 +321,92 @@ uint64_t DielectricAverageTable::SamplesPerTexel(const BakeSettings &s) const {
 TableRelations DielectricAverageTable::Relations() const {
   TableRelations r;
   r.averageOf = identity_.averageOf;
-  r.reciprocalMinus = identity_.reciprocalMinus;
   return r;
+}
+
+namespace {
+
+// The transmitted part T = this - minus (glass_Eavg - spec_Eavg) obeys
+// T(eta) = eta^2 T(1 / eta) over the eta axis (reciprocity of the BTDF,
+// docs/tables.md "Rough glass"), at every pair of slices eta, 1 / eta that
+// both tables hold, within the four texels' bounds.
+class Reciprocity final : public SetClaim {
+ public:
+  explicit Reciprocity(std::string minus) : minus_(std::move(minus)) {}
+  int Order() const override { return 5; }
+  void Judge(const CheckedTable &self, ClaimContext &set) const override {
+    using namespace claim_text;
+    const CheckedTable &g = self;
+
+    const std::string &minusName = minus_;
+    const CheckedTable *sp = set.Usable(minusName);
+    if (!sp || !g.usable) return;
+    const std::string subject = std::string(g.def->Name()) + "-" + minusName + set.Suffix();
+    if (!set.SameModel(g, *sp, subject, "reciprocity")) return;
+    const Table &tg = g.table, &ts = sp->table;
+    if (!(tg.x.count == ts.x.count && tg.x.min == ts.x.min && tg.x.max == ts.x.max &&
+          tg.x.name == ts.x.name && tg.x.nodes == ts.x.nodes && tg.y.nodes == ts.y.nodes &&
+          tg.y.count == ts.y.count && tg.y.min == ts.y.min && tg.y.max == ts.y.max)) {
+      set.Add(subject, "reciprocity", ClaimStatus::kSkipped,
+              "the two tables do not share their axes: nothing to compare texel by texel");
+      return;
+    }
+    const auto rounding = [&](const CheckedTable &t, double v) {
+      return t.boundsCoverStorage ? 0.0 : FloatRounding(v);
+    };
+    Worst worst;
+    int pairs = 0;
+    for (int j = 0; j < tg.height(); ++j) {
+      const double eta = tg.y.TexelCenter(j);
+      if (!(eta > 1.0)) continue;
+      int partner = -1;
+      for (int k = 0; k < tg.height(); ++k)
+        if (std::abs(eta * tg.y.TexelCenter(k) - 1.0) < 1e-12) partner = k;
+      if (partner < 0) continue;
+      for (int x = 0; x < tg.width(); ++x) {
+        const size_t a = tg.index(x, j, 0), b = tg.index(x, partner, 0);
+        const double gA = tg.values[a], sA = ts.values[a], gB = tg.values[b], sB = ts.values[b];
+        const double dev = std::abs((gA - sA) - eta * eta * (gB - sB));
+        const double allowed =
+            std::max(g.statedErrorMax, g.Bound(a)) + std::max(sp->statedErrorMax, sp->Bound(a)) +
+            rounding(g, gA) + rounding(*sp, sA) +
+            eta * eta *
+                (std::max(g.statedErrorMax, g.Bound(b)) +
+                 std::max(sp->statedErrorMax, sp->Bound(b)) + rounding(g, gB) + rounding(*sp, sB));
+        ++pairs;
+        worst.Note(dev, allowed, At(tg, tg.x.TexelCenter(x), eta));
+      }
+    }
+    const std::string claim =
+        "T = " + std::string(g.def->Name()) + " - " + minusName + " obeys T(eta) = eta^2 T(1/eta)";
+    if (pairs == 0)
+      set.Add(subject, "reciprocity", ClaimStatus::kSkipped,
+              claim + ": the eta axis holds no pair eta, 1/eta");
+    else if (worst.failed())
+      set.Add(subject, "reciprocity", ClaimStatus::kFail,
+              claim + ", but it is off by " + Short(worst.excessDeviation) + " at " +
+                  Where(worst.atExcess) + ", more than the " + Short(worst.excessAllowed) +
+                  " the four texels' bounds allow",
+              worst.excessDeviation, worst.excessAllowed, worst.atExcess);
+    else
+      set.Add(subject, "reciprocity", ClaimStatus::kPass,
+              claim + " at " + std::to_string(pairs) +
+                  " texel pairs, within the four texels' bounds: max |T(eta) - eta^2 T(1/eta)| " +
+                  Short(worst.deviation) + " at " + Where(worst.at),
+              worst.deviation, 0.0, worst.at);
+  }
+
+ private:
+  std::string minus_;
+};
+
+}  // namespace
+
+std::vector<std::shared_ptr<const SetClaim>> DielectricAverageTable::Claims() const {
+  std::vector<std::shared_ptr<const SetClaim>> claims{AverageOfClaim(identity_.averageOf)};
+  if (*identity_.reciprocalMinus)
+    claims.push_back(std::make_shared<Reciprocity>(identity_.reciprocalMinus));
+  return claims;
 }
 
 double DielectricTable::IndexMatchedAlbedo(const BakeSettings &s, double mu, double r) const {

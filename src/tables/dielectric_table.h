@@ -27,19 +27,16 @@ namespace lutbake {
 // Values uniform in s on the default eta axis (before the material nodes).
 inline constexpr int kDefaultEtaSize = 17;
 
+// The rough dielectric's model part: the microfacet part's NDF, Smith form
+// and alpha (MicrofacetModel, composed), with the exact dielectric Fresnel
+// and `lobes` recorded as well (metadata fresnel, lobes, transmission).
+const TableModel &DielectricModel(DielectricLobes lobes);
+
 class DielectricTable : public TableDefinition {
  public:
-  std::vector<std::string> ModelOptions() const override { return {"ndf", "smith"}; }
-  Metadata ModelMetadata(const BakeSettings &s) const override;
-  std::string AlphaMetadata(const BakeSettings &) const override {
-    return "alpha = perceptualRoughness^2";
-  }
-  std::string DescribeModel(const BakeSettings &s) const override;
+  const TableModel &ModelPart() const override { return DielectricModel(Lobes()); }
   bool ReadModel(const Table &table, BakeSettings *s,
                  std::vector<std::string> *problems) const override;
-  bool SameModel(const BakeSettings &a, const BakeSettings &b) const override {
-    return a.ndf == b.ndf && a.smith == b.smith;
-  }
   std::string QuadratureDescription(const BakeSettings &s) const override;
   std::string QuadratureBound(const BakeSettings &s) const override;
   std::string UnseenEventTerm() const override {
@@ -154,6 +151,7 @@ class DielectricAverageTable final : public DielectricTable {
   // the average of the 3D table's rows.
   Estimator ReferenceEstimator() const override { return Estimator::kQuadrature; }
   TableRelations Relations() const override;
+  std::vector<std::shared_ptr<const SetClaim>> Claims() const override;
   // The eta = 1 slice: 0 for reflection, IndexMatchedAverage for glass.
   std::optional<SliceClosedForm> SliceClosed(const BakeSettings &s) const override;
   HeaderText Header(const Table &) const override;

@@ -26,12 +26,71 @@
 // levels, the weight (o.h) (1 - o.h)^6 added to its kernel), the adaptive
 // reference, or E's sampled estimators (microfacet_table.cpp).
 #include "lutbake/tables/bake.h"
+#include "lutbake/tables/set_claim.h"
 #include "lutbake/tables/shader_dialect.h"
 #include "microfacet_table.h"
 
 namespace lutbake {
 
 namespace {
+
+using namespace claim_text;
+
+// C <= B / 4 (dfg's channel 1) at every shared texel, within the two stated
+// bounds and float rounding (no interpolation: the tables must share their
+// axes, else the claim is skipped).
+class AtMost final : public SetClaim {
+ public:
+  int Order() const override { return 4; }
+  void Judge(const CheckedTable &self, ClaimContext &set) const override {
+    const CheckedTable &small = self;
+
+    const CheckedTable *big = set.Usable(table_);
+    if (!big || !small.usable) return;
+    const std::string subject = std::string(small.def->Name()) + "+" + table_ + set.Suffix();
+    if (!set.SameModel(small, *big, subject, "at most")) return;
+    const Table &ts = small.table, &tb = big->table;
+    const auto same = [](const Axis &a, const Axis &b) {
+      return a.name == b.name && a.min == b.min && a.max == b.max && a.count == b.count &&
+             a.nodes == b.nodes;
+    };
+    const std::string claim = std::string(small.def->ChannelMeanings()[0]) +
+                              " <= " + Short(factor_) + " " +
+                              big->def->ChannelMeanings()[static_cast<size_t>(channel_)];
+    if (!same(ts.x, tb.x) || !same(ts.y, tb.y) || channel_ >= tb.channels) {
+      set.Add(subject, "at most", ClaimStatus::kSkipped,
+              claim + ": the tables do not share their texels (bake them at the same size)");
+      return;
+    }
+    double worstExcess = -1e300, worstValue = 0, worstAllowed = 0;
+    std::vector<std::pair<std::string, double>> at;
+    for (int y = 0; y < ts.height(); ++y)
+      for (int x = 0; x < ts.width(); ++x) {
+        const size_t i = ts.index(x, y, 0), j = tb.index(x, y, channel_);
+        const double excess = ts.values[i] - factor_ * tb.values[j];
+        const double allowed = small.Bound(i) + factor_ * big->Bound(j) +
+                               FloatRounding(ts.values[i]) + FloatRounding(tb.values[j]);
+        if (excess - allowed > worstExcess)
+          worstExcess = excess - allowed, worstValue = excess, worstAllowed = allowed,
+          at = At(ts, ts.x.TexelCenter(x), ts.y.TexelCenter(y));
+      }
+    const std::string where = "at " + std::to_string(ts.width() * ts.height()) + " shared texels";
+    if (worstExcess > 0.0)
+      set.Add(subject, "at most", ClaimStatus::kFail,
+              claim + " fails " + where + ": exceeded by " + Short(worstValue) + " at " +
+                  Where(at) + ", more than the " + Short(worstAllowed) + " the bounds allow",
+              worstValue, worstAllowed, at);
+    else
+      set.Add(subject, "at most", ClaimStatus::kPass,
+              claim + " " + where + " (closest at " + Where(at) + ")", worstValue, worstAllowed,
+              at);
+  }
+
+ private:
+  std::string table_ = "dfg";
+  int channel_ = 1;
+  double factor_ = 0.25;
+};
 
 class F82Term final : public MuRoughnessTable {
  public:
@@ -55,12 +114,8 @@ class F82Term final : public MuRoughnessTable {
     // 6^6 / 7^7 = 0.056652...: the maximum of (o.h) (1 - o.h)^6, times E <= 1.
     return {0.0, 46656.0 / 823543.0, false, "in [0, 6^6/7^7] (C <= 6^6/7^7 E)"};
   }
-  TableRelations Relations() const override {
-    TableRelations r;
-    r.atMostTable = "dfg";  // C <= B / 4
-    r.atMostChannel = 1;
-    r.atMostFactor = 0.25;
-    return r;
+  std::vector<std::shared_ptr<const SetClaim>> Claims() const override {
+    return {std::make_shared<AtMost>()};  // C <= B / 4
   }
   PlanRole Role() const override { return PlanRole::kF82ImageBasedLighting; }
   HeaderText Header(const Table &) const override {

@@ -21,6 +21,7 @@
 #include "ltc_table.h"
 #include "lutbake/integrators/ltc_fit.h"
 #include "lutbake/tables/bake.h"
+#include "lutbake/tables/set_claim.h"
 #include "sampled_texel.h"
 
 namespace lutbake {
@@ -50,11 +51,9 @@ class LtcBurley final : public LtcTableDefinition<BurleyModelTable> {
     return "m00..m22: 0 (the fit is the value; its quality is fitErrors); magnitude: 1e-14 (the "
            "closed form's rounding); fresnel: |level 2 - level 1| + 1e-12";
   }
-  TableRelations Relations() const override {
-    TableRelations r;
-    r.channelIs = "burley_E";
-    r.channelIsChannel = 4;
-    return r;
+  // Its magnitude is burley_E's value.
+  std::vector<std::shared_ptr<const SetClaim>> Claims() const override {
+    return {ChannelIsClaim("burley_E", 4)};
   }
 
   LtcLobe LobeAt(const BakeSettings &, double r) const override { return BurleyLtcLobe(r); }

@@ -25,6 +25,7 @@
 #include "ltc_table.h"
 #include "lutbake/integrators/ltc_fit.h"
 #include "lutbake/tables/bake.h"
+#include "lutbake/tables/set_claim.h"
 #include "microfacet_table.h"
 
 namespace lutbake {
@@ -55,11 +56,9 @@ class LtcGgx final : public LtcTableDefinition<MuRoughnessTable> {
     return "m00..m22: 0 (the fit is the value; its quality is fitErrors); magnitude, fresnel: "
            "|V_k - V_(k-1)| + 1e-10 of the panel rule at two orders";
   }
-  TableRelations Relations() const override {
-    TableRelations r;
-    r.channelIs = "E";
-    r.channelIsChannel = 4;
-    return r;
+  // Its magnitude is E's value.
+  std::vector<std::shared_ptr<const SetClaim>> Claims() const override {
+    return {ChannelIsClaim("E", 4)};
   }
   // The lobe at perceptual roughness r.
   LtcLobe LobeAt(const BakeSettings &s, double r) const override {

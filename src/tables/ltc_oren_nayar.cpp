@@ -21,6 +21,7 @@
 #include "ltc_table.h"
 #include "lutbake/integrators/ltc_fit.h"
 #include "lutbake/tables/bake.h"
+#include "lutbake/tables/set_claim.h"
 #include "oren_nayar_model.h"
 
 namespace lutbake {
@@ -52,11 +53,9 @@ class LtcOrenNayar final : public LtcTableDefinition<OrenNayarModelTable> {
            "oren_nayar_E's (16 x the Gauss-Kronrod estimate + 1e-13); fresnel: |level 2 - level "
            "1| + 1e-12";
   }
-  TableRelations Relations() const override {
-    TableRelations r;
-    r.channelIs = "oren_nayar_E";
-    r.channelIsChannel = 4;
-    return r;
+  // Its magnitude is oren_nayar_E's value.
+  std::vector<std::shared_ptr<const SetClaim>> Claims() const override {
+    return {ChannelIsClaim("oren_nayar_E", 4)};
   }
 
   LtcLobe LobeAt(const BakeSettings &, double sigma) const override {
@@ -84,7 +83,7 @@ class LtcOrenNayar final : public LtcTableDefinition<OrenNayarModelTable> {
 
   HeaderText Header(const Table &) const override {
     HeaderText text;
-    text.notes.push_back("Oren-Nayar diffuse, " + Model() + ", reflectance 1.");
+    text.notes.push_back("Oren-Nayar diffuse, " + ModelName() + ", reflectance 1.");
     text.notes.push_back(
         "sigma: the standard deviation of the facet slope angle, in radians, in [0, pi/2].");
     AddLtcNotes(&text, "oren_nayar_E");

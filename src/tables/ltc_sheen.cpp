@@ -28,6 +28,7 @@
 #include "lutbake/integrators/ltc_fit.h"
 #include "lutbake/integrators/sheen_quadrature.h"
 #include "lutbake/tables/bake.h"
+#include "lutbake/tables/set_claim.h"
 #include "sampled_texel.h"
 #include "sheen_table.h"
 
@@ -82,11 +83,9 @@ class LtcSheen final : public LtcTableDefinition<SheenTable> {
     return "m00..m22: 0 (the fit is the value; its quality is fitErrors); magnitude: sheen_E's "
            "(two orders of the panel rule); fresnel: |level 2 - level 1| + 5e-8";
   }
-  TableRelations Relations() const override {
-    TableRelations r;
-    r.channelIs = "sheen_E";
-    r.channelIsChannel = 4;
-    return r;
+  // Its magnitude is sheen_E's value.
+  std::vector<std::shared_ptr<const SetClaim>> Claims() const override {
+    return {ChannelIsClaim("sheen_E", 4)};
   }
 
   LtcLobe LobeAt(const BakeSettings &s, double r) const override {

@@ -12,32 +12,48 @@
 
 namespace lutbake {
 
-Metadata MicrofacetTable::ModelMetadata(const BakeSettings &s) const {
-  return {{"ndf", std::string(ToString(s.ndf))},
-          {"smith", std::string(ToString(s.smith))},
-          {"fresnel", "none (F = 1)"}};
-}
+namespace {
 
-std::string MicrofacetTable::DescribeModel(const BakeSettings &s) const {
-  return std::string(ToString(s.ndf)) + " " + std::string(ToString(s.smith));
-}
+class Microfacet final : public TableModel {
+ public:
+  std::vector<std::string> Options() const override { return {"ndf", "smith"}; }
+  Metadata Records(const BakeSettings &s) const override {
+    return {{"ndf", std::string(ToString(s.ndf))},
+            {"smith", std::string(ToString(s.smith))},
+            {"fresnel", "none (F = 1)"}};
+  }
+  std::string Alpha(const BakeSettings &) const override { return "alpha = perceptualRoughness^2"; }
+  std::string Describe(const BakeSettings &s) const override {
+    return std::string(ToString(s.ndf)) + " " + std::string(ToString(s.smith));
+  }
+  void Read(const Table &table, BakeSettings *s,
+            std::vector<std::string> *problems) const override {
+    const std::string ndf = RequiredMetadata(table, "ndf", problems),
+                      smith = RequiredMetadata(table, "smith", problems);
+    if (ndf != "ggx" && ndf != "beckmann") problems->push_back("ndf '" + ndf + "' unknown");
+    if (smith != "correlated" && smith != "separable")
+      problems->push_back("smith '" + smith + "' unknown");
+    s->ndf = ndf == "beckmann" ? NdfKind::kBeckmann : NdfKind::kGgx;
+    s->smith = smith == "separable" ? SmithForm::kSeparable : SmithForm::kCorrelated;
+    if (RequiredMetadata(table, "alpha", problems) != "alpha = perceptualRoughness^2")
+      problems->push_back("alpha is not perceptualRoughness^2");
+  }
+  bool Same(const BakeSettings &a, const BakeSettings &b) const override {
+    return a.ndf == b.ndf && a.smith == b.smith;
+  }
+};
 
-void ReadNdfSmithModel(const Table &table, BakeSettings *s, std::vector<std::string> *problems) {
-  const std::string ndf = RequiredMetadata(table, "ndf", problems),
-                    smith = RequiredMetadata(table, "smith", problems);
-  if (ndf != "ggx" && ndf != "beckmann") problems->push_back("ndf '" + ndf + "' unknown");
-  if (smith != "correlated" && smith != "separable")
-    problems->push_back("smith '" + smith + "' unknown");
-  s->ndf = ndf == "beckmann" ? NdfKind::kBeckmann : NdfKind::kGgx;
-  s->smith = smith == "separable" ? SmithForm::kSeparable : SmithForm::kCorrelated;
-  if (RequiredMetadata(table, "alpha", problems) != "alpha = perceptualRoughness^2")
-    problems->push_back("alpha is not perceptualRoughness^2");
+}  // namespace
+
+const TableModel &MicrofacetModel() {
+  static const Microfacet model;
+  return model;
 }
 
 bool MicrofacetTable::ReadModel(const Table &table, BakeSettings *s,
                                 std::vector<std::string> *problems) const {
   const size_t before = problems->size();
-  ReadNdfSmithModel(table, s, problems);
+  MicrofacetModel().Read(table, s, problems);
   // The roughness axis is the one a plan narrows; the other (of a 2D
   // table) is mu.
   const bool twoD = PlannedRoughnessAxis() == 1;

@@ -11,24 +11,17 @@
 
 namespace lutbake {
 
-// The lobe's NDF and Smith form and alpha = perceptualRoughness^2, read back
-// from a file's metadata (ndf, smith, alpha) into `s`, with the reasons when
-// they are not lutbake's; shared with the rough-dielectric tables.
-void ReadNdfSmithModel(const Table &table, BakeSettings *s, std::vector<std::string> *problems);
+// The microfacet model part (model_part.h): the lobe's NDF and Smith form
+// (options ndf, smith; F = 1) and alpha = perceptualRoughness^2, recorded
+// as metadata ndf, smith, fresnel and alpha and read back from them. The
+// rough-dielectric tables' part is built on it (dielectric_table.cpp).
+const TableModel &MicrofacetModel();
 
 class MicrofacetTable : public TableDefinition {
  public:
-  std::vector<std::string> ModelOptions() const override { return {"ndf", "smith"}; }
-  Metadata ModelMetadata(const BakeSettings &s) const override;
-  std::string AlphaMetadata(const BakeSettings &) const override {
-    return "alpha = perceptualRoughness^2";
-  }
-  std::string DescribeModel(const BakeSettings &s) const override;
+  const TableModel &ModelPart() const override { return MicrofacetModel(); }
   bool ReadModel(const Table &table, BakeSettings *s,
                  std::vector<std::string> *problems) const override;
-  bool SameModel(const BakeSettings &a, const BakeSettings &b) const override {
-    return a.ndf == b.ndf && a.smith == b.smith;
-  }
 
  protected:
   // The roughness axis of a point: "roughness", perceptual roughness r in

@@ -93,7 +93,7 @@ class OrenNayarAlbedo final : public OrenNayarModelTable {
   }
   HeaderText Header(const Table &table) const override {
     HeaderText text;
-    text.notes.push_back("Oren-Nayar diffuse, " + Model() + ", reflectance 1.");
+    text.notes.push_back("Oren-Nayar diffuse, " + ModelName() + ", reflectance 1.");
     text.notes.push_back(
         "sigma: the standard deviation of the facet slope angle, in radians, in [0, pi/2].");
     text.lookupComment = "Directional albedo at view cosine mu and roughness sigma (radians).";

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "diffuse_model_part.h"
 #include "lutbake/models/oren_nayar.h"
 #include "lutbake/tables/bake.h"
 #include "lutbake/tables/table_definition.h"
@@ -34,28 +35,20 @@ class OrenNayarModelTable : public TableDefinition {
     sigma.meaning = "the facet slope angle's standard deviation, radians";
     return {mu, sigma};
   }
-  std::vector<std::string> ModelOptions() const override { return {}; }
-  Metadata ModelMetadata(const BakeSettings &) const override {
-    return {{"model", Model()}, {"reflectance", "1"}};
+  const TableModel &ModelPart() const override {
+    static const char *kSigma = "sigma = the standard deviation of the facet slope angle, radians";
+    static const DiffuseModel qualitative("oren-nayar qualitative (A + B)", kSigma),
+        full("oren-nayar full (C1, C2, C3, L2)", kSigma);
+    return variant_ == OrenNayarVariant::kQualitative ? qualitative : full;
   }
-  std::string AlphaMetadata(const BakeSettings &) const override {
-    return "sigma = the standard deviation of the facet slope angle, radians";
-  }
-  std::string DescribeModel(const BakeSettings &) const override { return Model(); }
-  bool ReadModel(const Table &table, BakeSettings *,
+  bool ReadModel(const Table &table, BakeSettings *s,
                  std::vector<std::string> *problems) const override {
-    const std::string model = RequiredMetadata(table, "model", problems);
-    if (!model.empty() && model != Model())
-      problems->push_back("model '" + model + "', expected '" + Model() + "'");
+    ModelPart().Read(table, s, problems);
     return problems->empty();
   }
-  bool SameModel(const BakeSettings &, const BakeSettings &) const override { return true; }
 
  protected:
-  std::string Model() const {
-    return variant_ == OrenNayarVariant::kQualitative ? "oren-nayar qualitative (A + B)"
-                                                      : "oren-nayar full (C1, C2, C3, L2)";
-  }
+  std::string ModelName() const { return ModelPart().Describe(BakeSettings{}); }
   OrenNayarVariant variant_;
 };
 

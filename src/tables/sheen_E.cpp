@@ -29,6 +29,8 @@
 #include "lutbake/integrators/sheen_estimator.h"
 #include "lutbake/integrators/sheen_quadrature.h"
 #include "lutbake/tables/bake.h"
+#include "lutbake/tables/lookup.h"
+#include "lutbake/tables/set_claim.h"
 #include "lutbake/tables/shader_dialect.h"
 #include "sampled_texel.h"
 #include "sheen_table.h"
@@ -36,6 +38,74 @@
 namespace lutbake {
 
 namespace {
+
+// The albedo-scaling furnace (glTF KHR_materials_sheen): a white sheen
+// over a white base that reflects everything, the base scaled by
+// 1 - E_lookup(mu_o), reflects E(mu_o) + 1 - E_lookup(mu_o): 1 plus the
+// error of the lookup an engine does. Over a grid of (mu, r) cell centres
+// (the reference rule's values there: NeedsGrid): that deviation; judged
+// against what exact texels give there (|E_lookup - lookup of exact
+// texels| within the stated bounds), and where E_lookup > 1 makes the
+// base's weight negative.
+class AlbedoScalingFurnace final : public SetClaim {
+ public:
+  int Order() const override { return 3; }
+  bool NeedsGrid() const override { return true; }
+  void Judge(const CheckedTable &self, ClaimContext &set) const override {
+    using namespace claim_text;
+    const CheckedTable &t = self;
+    if (!t.usable) return;
+
+    const std::string name = t.def->Name() + set.Suffix();
+    const Table &table = t.table;
+    const std::vector<ReferencePoint> &grid = set.Grid(t);
+    const int g = static_cast<int>(std::lround(std::sqrt(static_cast<double>(grid.size()))));
+    double worst = 0.0, worstExact = 0.0, worstExcess = -1.0, excessValue = 0.0,
+           excessAllowed = 0.0, gain = 0.0;
+    std::vector<std::pair<std::string, double>> at, atExact, atExcess, atGain;
+    size_t negative = 0, compared = 0;
+    double negativeBelow = -1.0;
+    for (const ReferencePoint &p : grid) {
+      if (!std::isfinite(p.truth.value[0])) continue;
+      ++compared;
+      const double lookup = Lookup(table, p.x, p.y, 0);
+      const double lookupRef = Lookup(table, t.ref, p.x, p.y, 0);
+      const double d = p.truth.value[0] - lookup, dExact = p.truth.value[0] - lookupRef;
+      const auto here = At(table, p.x, p.y);
+      if (std::abs(d) > worst) worst = std::abs(d), at = here;
+      if (std::abs(dExact) > worstExact) worstExact = std::abs(dExact), atExact = here;
+      if (d > gain) gain = d, atGain = here;
+      if (lookup > 1.0) ++negative, negativeBelow = std::max(negativeBelow, p.y);
+      const double allowed = t.statedErrorMax + Lookup(table, t.refError, p.x, p.y, 0) +
+                             p.truth.error[0] + 2.0 * FloatRounding(lookup);
+      const double excess = std::abs(lookup - lookupRef) - allowed;
+      if (excess > worstExcess)
+        worstExcess = excess, excessValue = std::abs(lookup - lookupRef), excessAllowed = allowed,
+        atExcess = here;
+    }
+    std::string detail = "white sheen + (1 - E_lookup) white base over " + std::to_string(g) +
+                         " x " + std::to_string(g) + " (mu, r) cell centres: total - 1 = E - " +
+                         "E_lookup, max |.| " + Short(worst) + " at " + Where(at) +
+                         "; exact texels give " + Short(worstExact) + " at " + Where(atExact);
+    if (gain > 0.0)
+      detail += "; the most energy gained " + Short(gain) + " at " + Where(atGain) +
+                " (interpolation included)";
+    if (negative > 0)
+      detail +=
+          "; E_lookup > 1 (the base's weight negative: albedo scaling cannot conserve "
+          "energy there) at " +
+          std::to_string(negative) + " of " + std::to_string(compared) + " points, r up to " +
+          Short(negativeBelow);
+    if (worstExcess > 0.0)
+      set.Add(name, "furnace", ClaimStatus::kFail,
+              "the lookup departs from a lookup of exact texels by " + Short(excessValue) + " at " +
+                  Where(atExcess) + ", more than the " + Short(excessAllowed) +
+                  " the table's bounds allow. " + detail,
+              excessValue, excessAllowed, atExcess);
+    else
+      set.Add(name, "furnace", ClaimStatus::kPass, detail, worst, 0.0, at);
+  }
+};
 
 class SheenAlbedo final : public SheenTable {
  public:
@@ -108,10 +178,8 @@ class SheenAlbedo final : public SheenTable {
                  "visible-normal form)";
   }
 
-  TableRelations Relations() const override {
-    TableRelations r;
-    r.albedoScaling = true;
-    return r;
+  std::vector<std::shared_ptr<const SetClaim>> Claims() const override {
+    return {std::make_shared<AlbedoScalingFurnace>()};
   }
   PlanRole Role() const override { return PlanRole::kSheenAlbedoScaling; }
   HeaderText Header(const Table &table) const override {

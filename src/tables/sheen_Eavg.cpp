@@ -15,6 +15,7 @@
 #include "lutbake/integrators/sheen_estimator.h"
 #include "lutbake/integrators/sheen_quadrature.h"
 #include "lutbake/tables/bake.h"
+#include "lutbake/tables/set_claim.h"
 #include "sampled_texel.h"
 #include "sheen_table.h"
 
@@ -86,6 +87,9 @@ class SheenAverageAlbedo final : public SheenTable {
     TableRelations r;
     r.averageOf = "sheen_E";
     return r;
+  }
+  std::vector<std::shared_ptr<const SetClaim>> Claims() const override {
+    return {AverageOfClaim("sheen_E")};
   }
   HeaderText Header(const Table &table) const override {
     HeaderText text;

@@ -24,22 +24,46 @@ namespace {
 const char *kAlphaLinear = "alpha = sheenRoughness";
 const char *kAlphaSquared = "alpha = sheenRoughness^2";
 
+class Sheen final : public TableModel {
+ public:
+  std::vector<std::string> Options() const override { return {"sheen-visibility", "sheen-alpha"}; }
+  Metadata Records(const BakeSettings &s) const override {
+    return {{"ndf", "charlie"},
+            {"visibility", std::string(ToString(s.sheenVisibility))},
+            {"sheenColor", "1"},
+            {"fresnel", "none (F = 1)"}};
+  }
+  std::string Alpha(const BakeSettings &s) const override {
+    return s.sheenAlpha == SheenAlpha::kSquared ? kAlphaSquared : kAlphaLinear;
+  }
+  std::string Describe(const BakeSettings &s) const override {
+    return "Charlie NDF, " + std::string(ToString(s.sheenVisibility)) + " visibility, " + Alpha(s);
+  }
+  void Read(const Table &table, BakeSettings *s,
+            std::vector<std::string> *problems) const override {
+    if (RequiredMetadata(table, "ndf", problems) != "charlie")
+      problems->push_back("ndf is not charlie");
+    const std::string visibility = RequiredMetadata(table, "visibility", problems);
+    if (!ParseSheenVisibility(visibility, &s->sheenVisibility))
+      problems->push_back("visibility '" + visibility + "' unknown");
+    const std::string alpha = RequiredMetadata(table, "alpha", problems);
+    if (alpha == kAlphaLinear)
+      s->sheenAlpha = SheenAlpha::kLinear;
+    else if (alpha == kAlphaSquared)
+      s->sheenAlpha = SheenAlpha::kSquared;
+    else
+      problems->push_back("alpha '" + alpha + "' is neither sheenRoughness nor sheenRoughness^2");
+  }
+  bool Same(const BakeSettings &a, const BakeSettings &b) const override {
+    return a.sheenVisibility == b.sheenVisibility && a.sheenAlpha == b.sheenAlpha;
+  }
+};
+
 }  // namespace
 
-Metadata SheenTable::ModelMetadata(const BakeSettings &s) const {
-  return {{"ndf", "charlie"},
-          {"visibility", std::string(ToString(s.sheenVisibility))},
-          {"sheenColor", "1"},
-          {"fresnel", "none (F = 1)"}};
-}
-
-std::string SheenTable::AlphaMetadata(const BakeSettings &s) const {
-  return s.sheenAlpha == SheenAlpha::kSquared ? kAlphaSquared : kAlphaLinear;
-}
-
-std::string SheenTable::DescribeModel(const BakeSettings &s) const {
-  return "Charlie NDF, " + std::string(ToString(s.sheenVisibility)) + " visibility, " +
-         AlphaMetadata(s);
+const TableModel &SheenModel() {
+  static const Sheen model;
+  return model;
 }
 
 Metadata SheenTable::PointLabels(const BakeSettings &s) const {
@@ -50,18 +74,7 @@ Metadata SheenTable::PointLabels(const BakeSettings &s) const {
 bool SheenTable::ReadModel(const Table &table, BakeSettings *s,
                            std::vector<std::string> *problems) const {
   const size_t before = problems->size();
-  if (RequiredMetadata(table, "ndf", problems) != "charlie")
-    problems->push_back("ndf is not charlie");
-  const std::string visibility = RequiredMetadata(table, "visibility", problems);
-  if (!ParseSheenVisibility(visibility, &s->sheenVisibility))
-    problems->push_back("visibility '" + visibility + "' unknown");
-  const std::string alpha = RequiredMetadata(table, "alpha", problems);
-  if (alpha == kAlphaLinear)
-    s->sheenAlpha = SheenAlpha::kLinear;
-  else if (alpha == kAlphaSquared)
-    s->sheenAlpha = SheenAlpha::kSquared;
-  else
-    problems->push_back("alpha '" + alpha + "' is neither sheenRoughness nor sheenRoughness^2");
+  SheenModel().Read(table, s, problems);
   const bool twoD = PlannedRoughnessAxis() == 1;
   const Axis &r = twoD ? table.y : table.x;
   if (r.name != "sheenRoughness" || r.min < 0.0 || r.max > 1.0)

@@ -12,20 +12,17 @@
 
 namespace lutbake {
 
+// The sheen's model part: the Charlie NDF with the visibility and
+// roughness mapping of options sheen-visibility and sheen-alpha, sheen
+// colour 1, F = 1 (metadata ndf, visibility, sheenColor, fresnel, alpha).
+const TableModel &SheenModel();
+
 class SheenTable : public TableDefinition {
  public:
-  std::vector<std::string> ModelOptions() const override {
-    return {"sheen-visibility", "sheen-alpha"};
-  }
-  Metadata ModelMetadata(const BakeSettings &s) const override;
-  std::string AlphaMetadata(const BakeSettings &s) const override;
-  std::string DescribeModel(const BakeSettings &s) const override;
+  const TableModel &ModelPart() const override { return SheenModel(); }
   Metadata PointLabels(const BakeSettings &s) const override;
   bool ReadModel(const Table &table, BakeSettings *s,
                  std::vector<std::string> *problems) const override;
-  bool SameModel(const BakeSettings &a, const BakeSettings &b) const override {
-    return a.sheenVisibility == b.sheenVisibility && a.sheenAlpha == b.sheenAlpha;
-  }
   std::string QuadratureDescription(const BakeSettings &s) const override;
   std::string QuadratureBound(const BakeSettings &s) const override;
   std::string EstimatorProblem(Estimator e) const override;

@@ -21,6 +21,7 @@
 #include "lutbake/formats/writer.h"
 #include "lutbake/integrators/fresnel_average.h"
 #include "lutbake/tables/lookup.h"
+#include "lutbake/tables/set_claim.h"
 #include "lutbake/validation/fit_check.h"
 
 namespace lutbake {
@@ -35,77 +36,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Half an ulp of float32 at v: what storing a double as float may change.
-double FloatRounding(double v) { return std::abs(v) * 0x1p-24; }
+using namespace claim_text;
 
-std::string Short(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3g", v);
-  return buffer;
-}
-
-// The largest deviation of a claim over its points, and the point that
-// exceeds its allowance the most (excess > 0: the claim fails there).
-struct Worst {
-  using Place = std::vector<std::pair<std::string, double>>;
-  double deviation = 0.0, excess = -1.0, excessDeviation = 0.0, excessAllowed = 0.0;
-  Place at, atExcess;
-  void Note(double dev, double allowed, const Place &where) {
-    if (dev > deviation || at.empty()) deviation = dev, at = where;
-    if (dev - allowed > excess)
-      excess = dev - allowed, excessDeviation = dev, excessAllowed = allowed, atExcess = where;
-  }
-  bool failed() const { return excess > 0.0; }
-};
-
-// A table as read from DIR, with everything the checks need.
-struct Loaded {
-  const TableDefinition *def = nullptr;
-  size_t index = 0;             // in AllTables(): the order of the checks
-  Table table;                  // values of the primary file (EXR, else .bin, else .h)
-  std::string primary;          // its path
-  bool perTexelErrors = false;  // table.errors holds per-texel bounds (else errorMax)
-  double statedErrorMax = 0.0;  // metadata errorMax (+ storageError)
-  double storageError = 0.0;    // a half-storage header's stated rounding, when it is primary
-  // storageError is half's 2^-12 (a GPU texture or source embedding in
-  // half), which holds for values below 1 only: see StorageRounding.
-  bool halfStorage = false;
-  // The files state bounds of their stored values, rounding included
-  // (metadata errorStorage, storage.h): no float rounding is allowed on top.
-  bool boundsCoverStorage = false;
-  BakeSettings model;                 // the model the files state (ndf, smith, fresnel, ...)
-  bool usable = false;                // metadata understood: the numeric checks can run
-  std::vector<double> ref, refError;  // the quadrature at every texel, same layout as values
-  // Where the reference is the table's own rule: a sample of texels (flat
-  // indices) and their values by the independent one (CheckIndependent).
-  std::vector<size_t> independentTexels;
-  std::vector<PointValue> independent;
-
-  // The bound a texel's value claims: its own, or the stated maximum.
-  double Bound(size_t i) const { return perTexelErrors ? table.errors[i] : statedErrorMax; }
-  // What the storage may move the value v by: storageError, except that
-  // half's rounding grows with the value (half an ulp is 2^(k - 11) at |v|
-  // in [2^k, 2^(k + 1)): at most 2^-11 |v| from 1 up; burley_E reaches 1.56).
-  double StorageRounding(double v) const {
-    return halfStorage && std::abs(v) >= 1.0 ? 0x1p-11 * std::abs(v) : storageError;
-  }
-};
+// A table as read from DIR, with everything the checks need (set_claim.h).
+using Loaded = CheckedTable;
 
 // A .bin written with --bin-type double (errorStorage=float64).
 bool BinIsFloat64(const Table &bin) {
   const std::string *storage = bin.FindMetadata("errorStorage");
   return storage && *storage == "float64";
-}
-
-// Coordinates of a point for the report, named by the table's axes.
-std::vector<std::pair<std::string, double>> At(const Table &t, double x, double y, double z = 0.0) {
-  const auto name = [](const std::string &axis) {
-    return axis == "perceptualRoughness" ? std::string("roughness") : axis;
-  };
-  std::vector<std::pair<std::string, double>> at{{name(t.x.name), x}};
-  if (t.is2D()) at.emplace_back(name(t.y.name), y);
-  if (t.is3D()) at.emplace_back(name(t.z.name), z);
-  return at;
 }
 
 // The texel indices of flat texel number `texel` (x inner, then y, then z).
@@ -130,14 +69,7 @@ double LookupAt(const Table &t, const std::vector<double> &values, double x, dou
   return t.is3D() ? Lookup(t, values, x, y, z, c) : Lookup(t, values, x, y, c);
 }
 
-std::string Where(const std::vector<std::pair<std::string, double>> &at) {
-  std::string s = "(";
-  for (size_t i = 0; i < at.size(); ++i)
-    s += (i ? ", " : "") + at[i].first + " " + Short(at[i].second);
-  return s + ")";
-}
-
-class Checker {
+class Checker final : public ClaimContext {
  public:
   // suffix: "" for E, Eavg, Favg, dfg; "_beckmann" for E_beckmann, ...
   Checker(const std::string &dir, const CheckOptions &options, std::string suffix)
@@ -166,26 +98,54 @@ class Checker {
         CheckLimits(t);
         if (t.def->FittedChannels() > 0) CheckFit(t);
       }
-      // The relations the definitions declare, each kind in turn.
+      // The claims the definitions make with other tables of the set
+      // (set_claim.h), by order, then by table.
+      std::vector<std::pair<const SetClaim *, const Loaded *>> claims;
+      std::vector<std::shared_ptr<const SetClaim>> owned;
       for (auto &[index, t] : tables_)
-        if (const std::string &sum = t.def->Relations().channelsSumTo; !sum.empty())
-          CheckIdentity(sum, t);
-      for (auto &[index, t] : tables_)
-        if (const std::string &of = t.def->Relations().averageOf; !of.empty()) CheckAverage(of, t);
-      for (auto &[index, t] : tables_)
-        if (t.def->Relations().kullaConty) CheckFurnace(t.def->Relations().averageOf, t);
-      for (auto &[index, t] : tables_)
-        if (t.def->Relations().albedoScaling && t.usable) CheckAlbedoScaling(t);
-      for (auto &[index, t] : tables_)
-        if (!t.def->Relations().atMostTable.empty()) CheckAtMost(t);
-      for (auto &[index, t] : tables_)
-        if (!t.def->Relations().reciprocalMinus.empty()) CheckReciprocity(t);
-      for (auto &[index, t] : tables_)
-        if (!t.def->Relations().channelIs.empty()) CheckChannelIs(t);
+        for (std::shared_ptr<const SetClaim> &claim : t.def->Claims()) {
+          claims.emplace_back(claim.get(), &t);
+          owned.push_back(std::move(claim));
+        }
+      std::stable_sort(claims.begin(), claims.end(), [](const auto &a, const auto &b) {
+        return a.first->Order() < b.first->Order();
+      });
+      for (const auto &[claim, t] : claims) claim->Judge(*t, *this);
     }
     report_.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report_;
+  }
+
+  // ---- the set, as the claims see it (ClaimContext) ---------------------
+
+  // The usable table of this set whose definition is called `name`.
+  const Loaded *Usable(const std::string &name) const override {
+    for (const auto &[index, t] : tables_)
+      if (t.usable && name == t.def->Name()) return &t;
+    return nullptr;
+  }
+  const std::string &Suffix() const override { return suffix_; }
+  // Same model, or a failed check that says they differ.
+  bool SameModel(const Loaded &a, const Loaded &b, const std::string &subject,
+                 const std::string &check) override {
+    if (a.def->SameModel(a.model, b.model)) return true;
+    Add(subject, check, CheckStatus::kFail,
+        Name(*a.def) + " is " + a.def->DescribeModel(a.model) + " but " + Name(*b.def) + " is " +
+            b.def->DescribeModel(b.model) + ": the set mixes models");
+    return false;
+  }
+  void Add(const std::string &subject, const std::string &check, ClaimStatus status,
+           const std::string &detail, double worst, double allowed, ClaimPlace at) override {
+    Add(subject, check,
+        status == ClaimStatus::kPass   ? CheckStatus::kPass
+        : status == ClaimStatus::kFail ? CheckStatus::kFail
+                                       : CheckStatus::kSkipped,
+        detail, worst, allowed, std::move(at));
+  }
+  int FurnaceGrid() const override { return options_.furnaceGrid; }
+  const std::vector<ReferencePoint> &Grid(const Loaded &t) const override {
+    return scalingGrid_.at(t.index);
   }
 
  private:
@@ -682,7 +642,9 @@ class Checker {
       // The albedo-scaling furnace's grid: cell centres of a g x g grid
       // over the axes (mu = 0 itself, infinite for Charlie's sheen, is not
       // among them).
-      if (def.Relations().albedoScaling) {
+      const std::vector<std::shared_ptr<const SetClaim>> claims = def.Claims();
+      if (std::any_of(claims.begin(), claims.end(),
+                      [](const auto &claim) { return claim->NeedsGrid(); })) {
         const int g = std::clamp(options_.furnaceGrid / 4, 2, 65);
         std::vector<RandomPoint> &grid = scalingGrid_[kind];
         grid.resize(static_cast<size_t>(g) * g);
@@ -1141,127 +1103,6 @@ class Checker {
     }
   }
 
-  // ---- across tables ---------------------------------------------------
-
-  // Reciprocity between the two sides of an interface: T = G - S (glass
-  // minus reflection averages) obeys T(eta) = eta^2 T(1 / eta), at every
-  // roughness texel and every pair of eta slices both tables hold.
-  void CheckReciprocity(const Loaded &g) {
-    const std::string &minusName = g.def->Relations().reciprocalMinus;
-    const Loaded *sp = Usable(minusName);
-    if (!sp || !g.usable) return;
-    const std::string subject = std::string(g.def->Name()) + "-" + minusName + suffix_;
-    if (!SameModel(g, *sp, subject, "reciprocity")) return;
-    const Table &tg = g.table, &ts = sp->table;
-    if (!(tg.x.count == ts.x.count && tg.x.min == ts.x.min && tg.x.max == ts.x.max &&
-          tg.x.name == ts.x.name && tg.x.nodes == ts.x.nodes && tg.y.nodes == ts.y.nodes &&
-          tg.y.count == ts.y.count && tg.y.min == ts.y.min && tg.y.max == ts.y.max)) {
-      Add(subject, "reciprocity", CheckStatus::kSkipped,
-          "the two tables do not share their axes: nothing to compare texel by texel");
-      return;
-    }
-    const auto rounding = [&](const Loaded &t, double v) {
-      return t.boundsCoverStorage ? 0.0 : FloatRounding(v);
-    };
-    Worst worst;
-    int pairs = 0;
-    for (int j = 0; j < tg.height(); ++j) {
-      const double eta = tg.y.TexelCenter(j);
-      if (!(eta > 1.0)) continue;
-      int partner = -1;
-      for (int k = 0; k < tg.height(); ++k)
-        if (std::abs(eta * tg.y.TexelCenter(k) - 1.0) < 1e-12) partner = k;
-      if (partner < 0) continue;
-      for (int x = 0; x < tg.width(); ++x) {
-        const size_t a = tg.index(x, j, 0), b = tg.index(x, partner, 0);
-        const double gA = tg.values[a], sA = ts.values[a], gB = tg.values[b], sB = ts.values[b];
-        const double dev = std::abs((gA - sA) - eta * eta * (gB - sB));
-        const double allowed =
-            std::max(g.statedErrorMax, g.Bound(a)) + std::max(sp->statedErrorMax, sp->Bound(a)) +
-            rounding(g, gA) + rounding(*sp, sA) +
-            eta * eta *
-                (std::max(g.statedErrorMax, g.Bound(b)) +
-                 std::max(sp->statedErrorMax, sp->Bound(b)) + rounding(g, gB) + rounding(*sp, sB));
-        ++pairs;
-        worst.Note(dev, allowed, At(tg, tg.x.TexelCenter(x), eta));
-      }
-    }
-    const std::string claim =
-        "T = " + std::string(g.def->Name()) + " - " + minusName + " obeys T(eta) = eta^2 T(1/eta)";
-    if (pairs == 0)
-      Add(subject, "reciprocity", CheckStatus::kSkipped,
-          claim + ": the eta axis holds no pair eta, 1/eta");
-    else if (worst.failed())
-      Add(subject, "reciprocity", CheckStatus::kFail,
-          claim + ", but it is off by " + Short(worst.excessDeviation) + " at " +
-              Where(worst.atExcess) + ", more than the " + Short(worst.excessAllowed) +
-              " the four texels' bounds allow",
-          worst.excessDeviation, worst.excessAllowed, worst.atExcess);
-    else
-      Add(subject, "reciprocity", CheckStatus::kPass,
-          claim + " at " + std::to_string(pairs) +
-              " texel pairs, within the four texels' bounds: max |T(eta) - eta^2 T(1/eta)| " +
-              Short(worst.deviation) + " at " + Where(worst.at),
-          worst.deviation, 0.0, worst.at);
-  }
-
-  // The usable table of this set whose definition is called `name`.
-  const Loaded *Usable(const std::string &name) const {
-    for (const auto &[index, t] : tables_)
-      if (t.usable && name == t.def->Name()) return &t;
-    return nullptr;
-  }
-
-  // Same NDF and Smith form, or a failed check that says they differ.
-  bool SameModel(const Loaded &a, const Loaded &b, const std::string &subject,
-                 const std::string &check) {
-    if (a.def->SameModel(a.model, b.model)) return true;
-    Add(subject, check, CheckStatus::kFail,
-        Name(*a.def) + " is " + a.def->DescribeModel(a.model) + " but " + Name(*b.def) + " is " +
-            b.def->DescribeModel(b.model) + ": the set mixes models");
-    return false;
-  }
-
-  // A channel that is another table's value (ltc_ggx's magnitude = E), at
-  // that table's texel centres, this one interpolated there: within what
-  // interpolating exact texels gives, the bounds and float rounding.
-  void CheckChannelIs(const Loaded &t) {
-    const TableRelations rel = t.def->Relations();
-    const Loaded *e = Usable(rel.channelIs);
-    if (!e || !t.usable || e->table.is3D() || t.table.is3D()) return;
-    const std::string subject = std::string(t.def->Name()) + "+" + rel.channelIs + suffix_;
-    if (!SameModel(t, *e, subject, "channel")) return;
-    const int c = rel.channelIsChannel;
-    const std::string claim =
-        t.def->ChannelMeanings()[static_cast<size_t>(c)] + " = " + e->def->ChannelMeanings()[0];
-    const Table &te = e->table, &tt = t.table;
-    Worst worst;
-    for (int y = 0; y < te.height(); ++y)
-      for (int x = 0; x < te.width(); ++x) {
-        const double px = te.x.TexelCenter(x), py = te.y.TexelCenter(y);
-        const size_t i = te.index(x, y, 0);
-        const double v = Lookup(tt, px, py, c);
-        const double exactDev = std::abs(Lookup(tt, t.ref, px, py, c) - e->ref[i]);
-        const double allowed = exactDev + t.statedErrorMax + e->Bound(i) + e->refError[i] +
-                               Lookup(tt, t.refError, px, py, c) + FloatRounding(v) +
-                               FloatRounding(te.values[i]);
-        worst.Note(std::abs(v - te.values[i]), allowed, At(te, px, py));
-      }
-    const std::string where = "at " + std::string(e->def->Name()) + "'s " +
-                              std::to_string(te.width() * te.height()) + " texel centres (" +
-                              t.def->Name() + " interpolated)";
-    if (worst.failed())
-      Add(subject, "channel", CheckStatus::kFail,
-          claim + " fails " + where + ": " + Short(worst.excessDeviation) + " apart at " +
-              Where(worst.atExcess) + ", more than the " + Short(worst.excessAllowed) + " allowed",
-          worst.excessDeviation, worst.excessAllowed, worst.atExcess);
-    else
-      Add(subject, "channel", CheckStatus::kPass,
-          claim + " " + where + ": max difference " + Short(worst.deviation) + " at " +
-              Where(worst.at),
-          worst.deviation, 0.0, worst.at);
-  }
-
   // A fitted table (ltc_ggx): every texel usable (det M^-1 > 0); the
   // measures of the fit (lobe error, ...) recomputed for the stored texels
   // and held to what T.fit.exr states texel by texel (the same computation
@@ -1425,296 +1266,7 @@ class Checker {
       Add(name, "no jumps", CheckStatus::kPass, jumpDetail, jump.deviation, kJumpRatio, jump.at);
   }
 
-  // A + B = E at E's texel centres, dfg interpolated there.
-  void CheckIdentity(const std::string &sumName, const Loaded &channels) {
-    const Loaded *e = Usable(sumName), *d = &channels;
-    if (!e || !d->usable) return;
-    const std::string subject = sumName + "+" + d->def->Name() + suffix_;
-    if (!SameModel(*e, *d, subject, "identity")) return;
-    const Table &te = e->table, &td = d->table;
-    double worst = 0.0, worstExcess = -1.0, excessValue = 0, excessAllowed = 0;
-    std::vector<std::pair<std::string, double>> at, atExcess;
-    for (int y = 0; y < te.height(); ++y)
-      for (int x = 0; x < te.width(); ++x) {
-        const double mu = te.x.TexelCenter(x), r = te.y.TexelCenter(y);
-        const size_t i = te.index(x, y, 0);
-        const double sum = Lookup(td, mu, r, 0) + Lookup(td, mu, r, 1);
-        const double dev = std::abs(sum - te.values[i]);
-        // What exact texels give: the interpolation error of A + B at this point.
-        const double exactDev =
-            std::abs(Lookup(td, d->ref, mu, r, 0) + Lookup(td, d->ref, mu, r, 1) - e->ref[i]);
-        const double allowed = exactDev + 2.0 * d->statedErrorMax + e->statedErrorMax +
-                               Lookup(td, d->refError, mu, r, 0) +
-                               Lookup(td, d->refError, mu, r, 1) + e->refError[i] +
-                               2.0 * FloatRounding(sum) + FloatRounding(te.values[i]);
-        if (dev > worst) worst = dev, at = At(te, mu, r);
-        if (dev - allowed > worstExcess)
-          worstExcess = dev - allowed, excessValue = dev, excessAllowed = allowed,
-          atExcess = At(te, mu, r);
-      }
-    const std::string where =
-        "at E's " + std::to_string(te.width() * te.height()) + " texel centres (dfg interpolated)";
-    if (worstExcess > 0.0)
-      Add(subject, "identity", CheckStatus::kFail,
-          "A + B - E = " + Short(excessValue) + " at " + Where(atExcess) + ", more than the " +
-              Short(excessAllowed) + " that the tables' bounds and interpolation allow (" + where +
-              ")",
-          excessValue, excessAllowed, atExcess);
-    else
-      Add(subject, "identity", CheckStatus::kPass,
-          "A + B = E " + where + ": max |A + B - E| " + Short(worst) + " at " + Where(at), worst,
-          0.0, at);
-  }
-
-  // value <= factor x (channel of the other table) at every shared texel,
-  // within the two stated bounds and float rounding (no interpolation: the
-  // tables must share their axes, else the check is skipped).
-  void CheckAtMost(const Loaded &small) {
-    const TableRelations rel = small.def->Relations();
-    const Loaded *big = Usable(rel.atMostTable);
-    if (!big || !small.usable) return;
-    const std::string subject = std::string(small.def->Name()) + "+" + rel.atMostTable + suffix_;
-    if (!SameModel(small, *big, subject, "at most")) return;
-    const Table &ts = small.table, &tb = big->table;
-    const auto same = [](const Axis &a, const Axis &b) {
-      return a.name == b.name && a.min == b.min && a.max == b.max && a.count == b.count &&
-             a.nodes == b.nodes;
-    };
-    const std::string claim = std::string(small.def->ChannelMeanings()[0]) +
-                              " <= " + Short(rel.atMostFactor) + " " +
-                              big->def->ChannelMeanings()[static_cast<size_t>(rel.atMostChannel)];
-    if (!same(ts.x, tb.x) || !same(ts.y, tb.y) || rel.atMostChannel >= tb.channels) {
-      Add(subject, "at most", CheckStatus::kSkipped,
-          claim + ": the tables do not share their texels (bake them at the same size)");
-      return;
-    }
-    double worstExcess = -1e300, worstValue = 0, worstAllowed = 0;
-    std::vector<std::pair<std::string, double>> at;
-    for (int y = 0; y < ts.height(); ++y)
-      for (int x = 0; x < ts.width(); ++x) {
-        const size_t i = ts.index(x, y, 0), j = tb.index(x, y, rel.atMostChannel);
-        const double excess = ts.values[i] - rel.atMostFactor * tb.values[j];
-        const double allowed = small.Bound(i) + rel.atMostFactor * big->Bound(j) +
-                               FloatRounding(ts.values[i]) + FloatRounding(tb.values[j]);
-        if (excess - allowed > worstExcess)
-          worstExcess = excess - allowed, worstValue = excess, worstAllowed = allowed,
-          at = At(ts, ts.x.TexelCenter(x), ts.y.TexelCenter(y));
-      }
-    const std::string where = "at " + std::to_string(ts.width() * ts.height()) + " shared texels";
-    if (worstExcess > 0.0)
-      Add(subject, "at most", CheckStatus::kFail,
-          claim + " fails " + where + ": exceeded by " + Short(worstValue) + " at " + Where(at) +
-              ", more than the " + Short(worstAllowed) + " the bounds allow",
-          worstValue, worstAllowed, at);
-    else
-      Add(subject, "at most", CheckStatus::kPass,
-          claim + " " + where + " (closest at " + Where(at) + ")", worstValue, worstAllowed, at);
-  }
-
-  // E_avg = 2 integral E mu dmu from E's rows, where E's rows and E_avg's
-  // texels sit at the same roughness.
-  void CheckAverage(const std::string &ofName, const Loaded &average) {
-    const Loaded *e = Usable(ofName), *a = &average;
-    if (!e || !a->usable) return;
-    const std::string subject = ofName + "+" + a->def->Name() + suffix_;
-    if (!SameModel(*e, *a, subject, "average")) return;
-    const Table &te = e->table, &ta = a->table;
-    // A 3D E (mu, r, eta) averages to a 2D E_avg (r, eta): E's z is E_avg's y.
-    if (DescribeAxis(te.y) != DescribeAxis(ta.x) || te.x.min != 0.0 || te.x.max != 1.0 ||
-        (te.is3D() && DescribeAxis(te.z) != DescribeAxis(ta.y))) {
-      Add(subject, "average", CheckStatus::kSkipped,
-          "E's rows and E_avg's texels are not at the same roughness, or E does not span mu in "
-          "[0, 1]");
-      return;
-    }
-    double worst = 0.0, worstExcess = -1.0, excessValue = 0, excessAllowed = 0;
-    std::vector<std::pair<std::string, double>> at, atExcess;
-    const int n = te.width();
-    for (int z = 0; z < te.depth(); ++z)
-      for (int y = 0; y < te.height(); ++y) {
-        // The midpoint rule over E's texel centres, for the table and for exact texels.
-        double rule = 0.0, ruleExact = 0.0, ruleRefError = 0.0;
-        for (int x = 0; x < n; ++x) {
-          const double w = 2.0 * te.x.TexelCenter(x) / n;
-          rule += w * te.values[te.index(x, y, z, 0)];
-          ruleExact += w * e->ref[te.index(x, y, z, 0)];
-          ruleRefError += w * e->refError[te.index(x, y, z, 0)];
-        }
-        const size_t k = ta.index(y, z, 0);  // E_avg's texel at E's row y of slice z
-        const double eavg = ta.values[k], eavgRef = a->ref[k];
-        const double dev = std::abs(rule - eavg);
-        const double allowed = std::abs(ruleExact - eavgRef) + e->statedErrorMax +
-                               a->statedErrorMax + ruleRefError + a->refError[k] +
-                               2.0 * FloatRounding(eavg);
-        const double r = ta.x.TexelCenter(y), eta = ta.y.TexelCenter(z);
-        if (dev > worst) worst = dev, at = At(ta, r, eta);
-        if (dev - allowed > worstExcess)
-          worstExcess = dev - allowed, excessValue = dev, excessAllowed = allowed,
-          atExcess = At(ta, r, eta);
-      }
-    if (worstExcess > 0.0)
-      Add(subject, "average", CheckStatus::kFail,
-          "E_avg differs from 2 sum E mu / N over E's row by " + Short(excessValue) + " at " +
-              Where(atExcess) + ", more than the " + Short(excessAllowed) +
-              " the bounds and the midpoint rule on exact texels allow",
-          excessValue, excessAllowed, atExcess);
-    else
-      Add(subject, "average", CheckStatus::kPass,
-          "E_avg against the midpoint rule 2 sum E mu / N over each row of E: max deviation " +
-              Short(worst) + " at " + Where(at),
-          worst, 0.0, at);
-  }
-
-  // The white furnace of the Kulla-Conty lobe built from the baked E and
-  // E_avg through bilinear lookups, on a fine (mu, r) grid:
-  //   E(mu) + integral f_ms cos = E_o + (1 - E_o) (1 - E~) / (1 - E_avg),
-  //   E~ = 2 integral_0^1 E_lookup(mu_i) mu_i dmu_i (exact for a piecewise-linear lookup),
-  // so the deviation from 1 is d = (1 - E_o) (E_avg - E~) / (1 - E_avg).
-  void CheckFurnace(const std::string &ofName, const Loaded &average) {
-    const Loaded *e = Usable(ofName), *a = &average;
-    if (!e || !a->usable) return;
-    const std::string subject = ofName + "+" + a->def->Name() + suffix_;
-    if (!SameModel(*e, *a, subject, "furnace")) return;
-    const Table &te = e->table, &ta = a->table;
-    if (te.x.min != 0.0 || te.x.max != 1.0) {
-      Add(subject, "furnace", CheckStatus::kSkipped,
-          "E does not span mu in [0, 1], so integral f_ms cos cannot be formed");
-      return;
-    }
-    const int g = std::max(2, options_.furnaceGrid);
-    // The roughness range both tables cover.
-    const double rLo = std::max(te.y.min, ta.x.min), rHi = std::min(te.y.max, ta.x.max);
-    const double errE = e->statedErrorMax, errA = a->statedErrorMax;
-    const double refErrorE = *std::max_element(e->refError.begin(), e->refError.end());
-    double worst = 0.0, worstRef = 0.0, worstExcess = -1.0, excessValue = 0, excessAllowed = 0;
-    std::vector<std::pair<std::string, double>> at, atRef, atExcess;
-    int notJudged = 0, undefined = 0;
-    double notJudgedBelow = -1.0, undefinedBelow = -1.0;
-    for (int j = 0; j < g; ++j) {
-      const double r = rLo + (rHi - rLo) * j / (g - 1);
-      const double avg = Lookup(ta, r, 0.0, 0), avgRef = Lookup(ta, a->ref, r, 0.0, 0);
-      const double mix = LookupMuAverage(te, te.values, r, 0);
-      const double mixRef = LookupMuAverage(te, e->ref, r, 0);
-      const double epsA = errA + FloatRounding(avg) + Lookup(ta, a->refError, r, 0.0, 0);
-      const double epsE = errE + FloatRounding(1.0) + refErrorE;
-      // E_avg = 1 (it rounds there as r -> 0 in float): f_ms is 0 / 0 and an
-      // engine must guard the division. Reported, not judged.
-      if (!(1.0 - avg > 0.0) || !(1.0 - avgRef > 0.0)) {
-        undefined += g;
-        undefinedBelow = std::max(undefinedBelow, r);
-        continue;
-      }
-      // Where 1 - E_avg is within ten times E_avg's error the lobe's
-      // normalisation is not determined by the table: the deviation is
-      // reported but not judged against exact texels.
-      const bool judged = 1.0 - avg > 10.0 * epsA;
-      if (!judged) {
-        notJudged += g;
-        notJudgedBelow = std::max(notJudgedBelow, r);
-      }
-      for (int i = 0; i < g; ++i) {
-        const double mu = static_cast<double>(i) / (g - 1);
-        const double eo = Lookup(te, mu, r, 0), eoRef = Lookup(te, e->ref, mu, r, 0);
-        const double q = (avg - mix) / (1.0 - avg);
-        const double d = (1.0 - eo) * q;
-        const double dRef = (1.0 - eoRef) * (avgRef - mixRef) / (1.0 - avgRef);
-        if (std::abs(d) > worst) worst = std::abs(d), at = {{"mu", mu}, {"roughness", r}};
-        if (std::abs(dRef) > worstRef)
-          worstRef = std::abs(dRef), atRef = {{"mu", mu}, {"roughness", r}};
-        if (!judged) continue;
-        // First-order propagation of the bounds of E_o, E~ and E_avg, with
-        // 20% for the second-order terms (epsA < (1 - E_avg) / 10 here).
-        const double allowed = 1.2 * (std::abs(q) * epsE + (1.0 - eo) / (1.0 - avg) * epsE +
-                                      (1.0 - eo) * std::abs(1.0 - mix) / Sqr(1.0 - avg) * epsA);
-        const double excess = std::abs(d - dRef) - allowed;
-        if (excess > worstExcess)
-          worstExcess = excess, excessValue = std::abs(d - dRef), excessAllowed = allowed,
-          atExcess = {{"mu", mu}, {"roughness", r}};
-      }
-    }
-    std::string detail = "E + integral f_ms cos - 1 over " + std::to_string(g) + " x " +
-                         std::to_string(g) + " (mu, r) in [0, 1] x [" + Short(rLo) + ", " +
-                         Short(rHi) + "]: max |deviation| " + Short(worst) + " at " + Where(at) +
-                         "; exact texels at the same places give " + Short(worstRef) + " at " +
-                         Where(atRef);
-    if (notJudged > 0)
-      detail += "; " + std::to_string(notJudged) + " points with r <= " + Short(notJudgedBelow) +
-                " not judged against exact texels (1 - E_avg within 10x E_avg's error)";
-    if (undefined > 0)
-      detail += "; E_avg is 1 at r <= " + Short(undefinedBelow) +
-                ": f_ms is 0 / 0 there and an engine must guard it";
-    if (worstExcess > 0.0)
-      Add(subject, "furnace", CheckStatus::kFail,
-          "the baked deviation departs from that of exact texels by " + Short(excessValue) +
-              " at " + Where(atExcess) + ", more than the " + Short(excessAllowed) +
-              " the tables' bounds allow. " + detail,
-          excessValue, excessAllowed, atExcess);
-    else
-      Add(subject, "furnace", CheckStatus::kPass, detail, worst, 0.0, at);
-  }
-
-  // The albedo-scaling furnace (glTF KHR_materials_sheen): a white sheen
-  // over a white base that reflects everything, the base scaled by
-  // 1 - E_lookup(mu_o), reflects E(mu_o) + 1 - E_lookup(mu_o): 1 plus the
-  // error of the lookup an engine does. Over a grid of (mu, r) cell
-  // centres: that deviation; judged against what exact texels give there
-  // (|E_lookup - lookup of exact texels| within the stated bounds), and
-  // where E_lookup > 1 makes the base's weight negative.
-  void CheckAlbedoScaling(const Loaded &t) {
-    const std::string name = Name(*t.def);
-    const Table &table = t.table;
-    const std::vector<RandomPoint> &grid = scalingGrid_.at(t.index);
-    const int g = static_cast<int>(std::lround(std::sqrt(static_cast<double>(grid.size()))));
-    double worst = 0.0, worstExact = 0.0, worstExcess = -1.0, excessValue = 0.0,
-           excessAllowed = 0.0, gain = 0.0;
-    std::vector<std::pair<std::string, double>> at, atExact, atExcess, atGain;
-    size_t negative = 0, compared = 0;
-    double negativeBelow = -1.0;
-    for (const RandomPoint &p : grid) {
-      if (!std::isfinite(p.truth.value[0])) continue;
-      ++compared;
-      const double lookup = Lookup(table, p.x, p.y, 0);
-      const double lookupRef = Lookup(table, t.ref, p.x, p.y, 0);
-      const double d = p.truth.value[0] - lookup, dExact = p.truth.value[0] - lookupRef;
-      const auto here = At(table, p.x, p.y);
-      if (std::abs(d) > worst) worst = std::abs(d), at = here;
-      if (std::abs(dExact) > worstExact) worstExact = std::abs(dExact), atExact = here;
-      if (d > gain) gain = d, atGain = here;
-      if (lookup > 1.0) ++negative, negativeBelow = std::max(negativeBelow, p.y);
-      const double allowed = t.statedErrorMax + Lookup(table, t.refError, p.x, p.y, 0) +
-                             p.truth.error[0] + 2.0 * FloatRounding(lookup);
-      const double excess = std::abs(lookup - lookupRef) - allowed;
-      if (excess > worstExcess)
-        worstExcess = excess, excessValue = std::abs(lookup - lookupRef), excessAllowed = allowed,
-        atExcess = here;
-    }
-    std::string detail = "white sheen + (1 - E_lookup) white base over " + std::to_string(g) +
-                         " x " + std::to_string(g) + " (mu, r) cell centres: total - 1 = E - " +
-                         "E_lookup, max |.| " + Short(worst) + " at " + Where(at) +
-                         "; exact texels give " + Short(worstExact) + " at " + Where(atExact);
-    if (gain > 0.0)
-      detail += "; the most energy gained " + Short(gain) + " at " + Where(atGain) +
-                " (interpolation included)";
-    if (negative > 0)
-      detail +=
-          "; E_lookup > 1 (the base's weight negative: albedo scaling cannot conserve "
-          "energy there) at " +
-          std::to_string(negative) + " of " + std::to_string(compared) + " points, r up to " +
-          Short(negativeBelow);
-    if (worstExcess > 0.0)
-      Add(name, "furnace", CheckStatus::kFail,
-          "the lookup departs from a lookup of exact texels by " + Short(excessValue) + " at " +
-              Where(atExcess) + ", more than the " + Short(excessAllowed) +
-              " the table's bounds allow. " + detail,
-          excessValue, excessAllowed, atExcess);
-    else
-      Add(name, "furnace", CheckStatus::kPass, detail, worst, 0.0, at);
-  }
-
-  struct RandomPoint {
-    double x = 0, y = 0, z = 0;
-    PointValue truth;
-  };
+  using RandomPoint = ReferencePoint;
 
   std::string Name(const TableDefinition &def) const { return def.Name() + suffix_; }
 

@@ -15,9 +15,9 @@
 //   integration  Evaluate(settings, x, y): the value and its bound at any
 //                point of its axes, with the settings' estimator;
 //   claims       what `check` asserts: the value range, monotonicity, a
-//                closed form, and relations to other tables (channels that
-//                sum to another table, an average over another's rows, a
-//                furnace);
+//                closed form, and claims about it with other tables of its
+//                set (set_claim.h: channels that sum to another table, an
+//                average over another's rows, a furnace);
 //   uses         the role a bake plan needs it for, the header's notes and
 //                helper functions, and the shader helpers (lutbake.<ext>)
 //                that use its texture lookups.
@@ -28,18 +28,18 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "lutbake/tables/model_part.h"
 #include "lutbake/tables/settings.h"
 #include "lutbake/tables/table.h"
 
 namespace lutbake {
-
-using Metadata = std::vector<std::pair<std::string, std::string>>;
 
 // One coordinate of a point of a table: the `lutbake eval` option that
 // gives it (without the dashes; also its JSON key and its label in eval's
@@ -109,38 +109,19 @@ struct LimitClaim {
   std::function<bool(double a, double b)> excluded;
 };
 
-// Relations to other tables (by name) that `check` verifies when both are in
-// a baked set, and that decide which helper headers a bake writes.
+// How a table stands to another of its set, for what a bake writes beside
+// them (the Kulla-Conty helpers of kulla_conty.h and lutbake.<ext>). What
+// `check` asserts of the two is a claim (Claims, set_claim.h).
 struct TableRelations {
-  // The channels of this table add up to that table at the same point
-  // (dfg: A + B = E).
-  std::string channelsSumTo;
   // This table is 2 integral_0^1 T(mu) mu dmu over the rows of table T
   // (Eavg of E): its x axis is T's y axis.
   std::string averageOf;
-  // With averageOf: the Kulla-Conty furnace of T and this table, and the
-  // kulla_conty.h helpers of a header bake.
+  // With averageOf: the Kulla-Conty lobe of T and this table, whose helpers
+  // a header or shader bake of both writes.
   bool kullaConty = false;
-  // The albedo-scaling furnace of a layer over a white base (sheen):
-  // layer + (1 - E(mu_o)) base reflects 1 + E - E_lookup.
-  bool albedoScaling = false;
-  // Every value is at most atMostFactor times channel atMostChannel of table
-  // atMostTable at the same texel (f82: C <= B / 4 with dfg's B); checked
-  // where the two tables share their axes.
-  std::string atMostTable;
-  int atMostChannel = 0;
-  double atMostFactor = 1.0;
-  // The transmitted part T = this - reciprocalMinus (glass_Eavg -
-  // spec_Eavg) obeys T(eta) = eta^2 T(1 / eta) over a y axis of eta
-  // (reciprocity of the BTDF, docs/tables.md "Rough glass"); checked at every pair
-  // of slices eta, 1 / eta that both tables hold.
-  std::string reciprocalMinus;
-  // Channel channelIsChannel of this table is table channelIs's value at
-  // the same point (ltc_ggx's magnitude is E), checked at channelIs's texel
-  // centres, this table interpolated there.
-  std::string channelIs;
-  int channelIsChannel = 0;
 };
+
+class SetClaim;  // set_claim.h
 
 // Why a bake plan (plans/plan.h) needs a table.
 enum class PlanRole {
@@ -242,24 +223,35 @@ class TableDefinition {
   virtual int PlannedRoughnessAxis() const { return -1; }
 
   // ---- model ----------------------------------------------------------
+  // The part that states its model (model_part.h); the five questions
+  // below ask it.
+  virtual const TableModel &ModelPart() const = 0;
   // The command-line options that choose its model: "ndf", "smith", ...
-  virtual std::vector<std::string> ModelOptions() const = 0;
+  std::vector<std::string> ModelOptions() const { return ModelPart().Options(); }
   // The metadata that records the model, before the axes (ndf, smith,
   // fresnel, ...), and the key 'alpha' after them.
-  virtual Metadata ModelMetadata(const BakeSettings &settings) const = 0;
-  virtual std::string AlphaMetadata(const BakeSettings &settings) const = 0;
+  Metadata ModelMetadata(const BakeSettings &settings) const {
+    return ModelPart().Records(settings);
+  }
+  std::string AlphaMetadata(const BakeSettings &settings) const {
+    return ModelPart().Alpha(settings);
+  }
   // The model in words ("ggx correlated", "fresnel schlick").
-  virtual std::string DescribeModel(const BakeSettings &settings) const = 0;
+  std::string DescribeModel(const BakeSettings &settings) const {
+    return ModelPart().Describe(settings);
+  }
+  // Do two settings give this table the same model?
+  bool SameModel(const BakeSettings &a, const BakeSettings &b) const {
+    return ModelPart().Same(a, b);
+  }
   // Labels of a point besides its coordinates (eval's text and JSON):
   // Favg's {"fresnel", "schlick"}.
   virtual Metadata PointLabels(const BakeSettings &) const { return {}; }
-  // Reads the model from a file's metadata and axes (lutbake check) into
-  // `settings`; returns false, with the reasons, when the file does not
-  // describe a table lutbake writes.
+  // Reads the model from a file's metadata (ModelPart().Read) and checks
+  // the axes (lutbake check) into `settings`; returns false, with the
+  // reasons, when the file does not describe a table lutbake writes.
   virtual bool ReadModel(const Table &table, BakeSettings *settings,
                          std::vector<std::string> *problems) const = 0;
-  // Do two settings give this table the same model?
-  virtual bool SameModel(const BakeSettings &a, const BakeSettings &b) const = 0;
 
   // ---- integration ----------------------------------------------------
   // Does it take the sampled estimators and --tolerance? (F_avg is always
@@ -373,6 +365,11 @@ class TableDefinition {
   virtual std::optional<SliceClosedForm> SliceClosed(const BakeSettings &) const { return {}; }
   virtual std::vector<LimitClaim> Limits(const BakeSettings &) const { return {}; }
   virtual TableRelations Relations() const { return {}; }
+  // What `check` asserts of it together with other tables of its set (A +
+  // B = E, an average of another table's rows, a furnace, ...): objects
+  // that judge themselves (set_claim.h), defined in the table's file or,
+  // where several tables make one, in set_claims.cpp.
+  virtual std::vector<std::shared_ptr<const SetClaim>> Claims() const { return {}; }
 
   // ---- uses -----------------------------------------------------------
   virtual PlanRole Role() const { return PlanRole::kNone; }
