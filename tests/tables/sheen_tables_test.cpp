@@ -19,6 +19,7 @@
 #include "lutbake/lutbake.h"
 #include "lutbake/tables/bake.h"
 #include "lutbake/tables/lookup.h"
+#include "lutbake/tables/set_claim.h"
 #include "support/bake_for_test.h"
 #include "support/cli_run.h"
 #include "support/csv.h"
@@ -49,8 +50,12 @@ BakeSettings EvalSettings(const std::string &visibility, SheenAlpha alpha = Shee
 
 TEST(SheenTables, AreDefinedAndRegistered) {
   const TableDefinition &e = TableNamed("sheen_E"), &avg = TableNamed("sheen_Eavg");
-  EXPECT_EQ(e.Relations().albedoScaling, true);
+  // Its claim with the set: the albedo-scaling furnace, judged on a grid of
+  // reference values; sheen_Eavg averages sheen_E's rows.
+  ASSERT_EQ(e.Claims().size(), 1u);
+  EXPECT_TRUE(e.Claims()[0]->NeedsGrid());
   EXPECT_EQ(avg.Relations().averageOf, "sheen_E");
+  EXPECT_EQ(avg.Claims().size(), 1u);
   EXPECT_EQ(e.Role(), PlanRole::kSheenAlbedoScaling);
   Axis x, y;
   DefaultAxes(e, BakeSettings{}, &x, &y);
