@@ -119,10 +119,11 @@ nlohmann::ordered_json ModelJson(const PresetTexture &texture) {
   if (texture.model.alphaMin > 0.0) model["alphaMin"] = texture.model.alphaMin;
   if (texture.model.unitEtaWindow > 0.0) model["unitEtaWindow"] = texture.model.unitEtaWindow;
   for (const PresetChannel &c : texture.channels)
-    if (c.meaning.rfind("ltc_m", 0) == 0) {
-      model["ltcLobe"] = ToString(texture.model.ltcLobe);
+    if (const PresetChannelSource source = SourceOf(c); source.fitted) {
+      // The lobe of the fitted table, and the entry of M^-1 that is 1.
+      model["ltcLobe"] = source.lobe;
       model["ltcScale"] =
-          texture.model.ltcScale == PresetLtcScale::kUnitM22 ? "m22 = 1" : "m11 = 1";
+          (c.over.empty() ? "m11" : SourceOf({c.over, c.table}).channel) + std::string(" = 1");
       break;
     }
   for (const PresetChannel &c : texture.channels)

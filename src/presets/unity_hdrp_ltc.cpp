@@ -51,8 +51,9 @@ namespace lutbake {
 
 namespace {
 
-// One slice's C# array over (perceptual roughness, sqrt(1 - NdotV)), edges.
-PresetTexture HdrpLtcSlice(const char *file, const char *slice, PresetLtcLobe lobe,
+// One slice's C# array over (perceptual roughness, sqrt(1 - NdotV)), edges:
+// M^-1 of the fit of `table`, each entry over m22.
+PresetTexture HdrpLtcSlice(const char *file, const char *slice, const char *table,
                            double alphaMin) {
   PresetTexture t;
   t.file = file;
@@ -60,13 +61,14 @@ PresetTexture HdrpLtcSlice(const char *file, const char *slice, PresetLtcLobe lo
   PresetAxis mu = EdgesAxis("mu", 64);
   mu.mapping = PresetMapping::kOneMinusSquare;
   t.axes = {EdgesAxis("roughness", 64), mu};
-  t.channels = {{"ltc_m00"}, {"zero"},    {"ltc_m20"}, {"zero"}, {"ltc_m11"},
-                {"zero"},    {"ltc_m02"}, {"zero"},    {"one"}};
+  const auto entry = [table](const char *meaning) {
+    return PresetChannel{meaning, table, "ltc_m22"};
+  };
+  t.channels = {entry("ltc_m00"), {"zero"},         entry("ltc_m20"), {"zero"}, entry("ltc_m11"),
+                {"zero"},         entry("ltc_m02"), {"zero"},         {"one"}};
   t.model.smith = SmithForm::kCorrelated;
   t.model.alpha = AlphaMapping::kSquared;
   t.model.alphaMin = alphaMin;
-  t.model.ltcLobe = lobe;
-  t.model.ltcScale = PresetLtcScale::kUnitM22;
   t.sampling = std::string(
                    "ltcTransform._m00_m02_m11_m20 = SAMPLE_TEXTURE2D_ARRAY_LOD(_LtcData, "
                    "s_linear_clamp_sampler, Remap01ToHalfTexelCoord(float2("
@@ -97,17 +99,17 @@ const Preset &UnityHdrpLtcPreset() {
         "C# arrays (double[64 * 64, 9]: M^-1 transposed, m22 = 1); x = perceptual roughness, "
         "y = sqrt(1 - NdotV) (edges)";
     PresetTexture ggx =
-        HdrpLtcSlice("LtcData.BRDF_GGX.cs", "LTCLIGHTINGMODEL_GGX", PresetLtcLobe::kGgx, 0.001);
+        HdrpLtcSlice("LtcData.BRDF_GGX.cs", "LTCLIGHTINGMODEL_GGX", "ltc_ggx", 0.001);
     PresetTexture disney = HdrpLtcSlice("LtcData.BRDF_Disney.cs", "LTCLIGHTINGMODEL_DISNEY_DIFFUSE",
-                                        PresetLtcLobe::kBurley, 0.002);
-    PresetTexture charlie = HdrpLtcSlice("LtcData.BRDF_Charlie.cs", "LTCLIGHTINGMODEL_CHARLIE",
-                                         PresetLtcLobe::kSheen, 0.002);
+                                        "ltc_burley", 0.002);
+    PresetTexture charlie =
+        HdrpLtcSlice("LtcData.BRDF_Charlie.cs", "LTCLIGHTINGMODEL_CHARLIE", "ltc_sheen", 0.002);
     charlie.model.sheenVisibility = SheenVisibility::kCharlie;
     charlie.axes[1].lowest = 1e-4;  // ClampNdotV
     // sigma = (pi / 2) max(alpha, 0.002 / (pi / 2)) = max(0.002, (pi / 2) alpha).
     PresetTexture orenNayar =
-        HdrpLtcSlice("LtcData.BRDF_OrenNayar.cs", "LTCLIGHTINGMODEL_OREN_NAYAR",
-                     PresetLtcLobe::kOrenNayar, 0.002 / (0.5 * kPi));
+        HdrpLtcSlice("LtcData.BRDF_OrenNayar.cs", "LTCLIGHTINGMODEL_OREN_NAYAR", "ltc_oren_nayar",
+                     0.002 / (0.5 * kPi));
     p.textures = {ggx, disney, charlie, orenNayar};
     return p;
   }();

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <stdexcept>
 
 #include "lutbake/tables/bake.h"
+#include "lutbake/tables/fitted_lobe.h"
 #include "sampled_texel.h"
 
 namespace lutbake {
@@ -162,6 +164,16 @@ void AddLtcHeaderNotes(HeaderText *text, const std::string &magnitudeIs) {
       "; channels m00, m20, m02, m22,\n"
       "// magnitude (= " +
       magnitudeIs + "), fresnel.\n";
+}
+
+bool FitsLobe(const TableDefinition &table) {
+  return dynamic_cast<const LtcLobeFamily *>(&table) != nullptr;
+}
+
+LtcLobe FittedLobe(const TableDefinition &table, const BakeSettings &settings, double y) {
+  const auto *lobes = dynamic_cast<const LtcLobeFamily *>(&table);
+  if (!lobes) throw std::invalid_argument(std::string("table ") + table.Name() + " fits no lobe");
+  return lobes->LobeAt(settings, y);
 }
 
 }  // namespace lutbake

@@ -27,6 +27,7 @@
 #include "lutbake/tables/settings.h"
 #include "lutbake/tables/storage.h"
 #include "lutbake/tables/table.h"
+#include "lutbake/tables/table_definition.h"
 
 namespace lutbake {
 
@@ -72,21 +73,6 @@ struct PresetAxis {
   double Quantity(int i) const;
 };
 
-// The lobe an LTC texture's matrix channels (ltc_*) are fitted to, its
-// parameter from alpha = AlphaOf(model alpha, roughness, alphaMin):
-//   kGgx        GGX at alpha with the model's Smith form (table ltc_ggx)
-//   kBurley     Burley's diffuse at perceptual roughness sqrt(alpha) (ltc_burley)
-//   kSheen      the sheen lobe at alpha, the model's sheenVisibility (ltc_sheen)
-//   kOrenNayar  the qualitative Oren-Nayar lobe at sigma = (pi / 2) alpha
-//               radians (ltc_oren_nayar; Unity HDRP's BRDF_OrenNayar mapping)
-enum class PresetLtcLobe { kGgx, kBurley, kSheen, kOrenNayar };
-const char *ToString(PresetLtcLobe lobe);
-
-// The scale of M^-1 (the LTC is the same for any positive multiple):
-//   kUnitM11  m11 = 1 (ltc_code, three.js, EEVEE, Babylon.js; the tables')
-//   kUnitM22  m22 = 1 (Unity HDRP's LtcData tables): every entry over m22
-enum class PresetLtcScale { kUnitM11, kUnitM22 };
-
 // The model an engine integrates its channels with, in the models' and
 // tables' own terms: a channel reads its table (TableNamed) under
 // TableSettings(), at alpha from the roughness axis through `alpha`.
@@ -111,9 +97,6 @@ struct PresetModel {
   SheenVisibility sheenVisibility = SheenVisibility::kCharlie;
   AlphaMapping sheenAlpha = AlphaMapping::kLinear;
   double sheenAlphaMin = 0.0;  // sheen_E at alpha = max(alpha, sheenAlphaMin)
-  // The LTC channels' lobe and the scale of their M^-1.
-  PresetLtcLobe ltcLobe = PresetLtcLobe::kGgx;
-  PresetLtcScale ltcScale = PresetLtcScale::kUnitM11;
 
   // The settings the channels' tables are evaluated under: smith,
   // sheenVisibility and sheenAlpha (the rest their defaults).
@@ -126,24 +109,38 @@ struct PresetModel {
 std::string DescribeVisibility(const PresetModel &model);
 const char *DescribeAlpha(AlphaMapping alpha);
 
-// A channel: stored = scale * meaning + offset, meaning one of
-//   "A", "B"    the split-sum terms: int f (1 - (1 - v.h)^5) cos and
-//               int f (1 - v.h)^5 cos, F = 1 in f, so that Schlick's
-//               F0 A + F90 B is the specular albedo
+// A channel: stored = scale * meaning + offset, meaning a quantity of the
+// one list of them (src/presets/channel_source.cpp), each a registered
+// table's channel read at the point the texel gives that table, or one of
+// a few quantities no table holds:
+//   "A", "B"    table dfg's channels at (mu, r = sqrt(alpha)): the split-sum
+//               terms int f (1 - (1 - v.h)^5) cos and int f (1 - v.h)^5
+//               cos, F = 1 in f, so that Schlick's F0 A + F90 B is the
+//               specular albedo; under a fitted G2 (PresetModel::fitted)
+//               the same panel quadrature with that G2
 //   "E"         A + B, the directional albedo (F = 1)
-//   "Eavg"      2 int_0^1 E(mu) mu dmu (a 1D table over roughness)
-//   "sheen_E"   the Charlie sheen's directional albedo
-//   "sheen_B"   its Schlick-weighted part int D V (1 - o.h)^5 mu_i (HDRP)
-//   "fabric_lambert"  1 - alpha / 2 (HDRP's FabricLambertNoPI)
-//   "f82"       the F82-tint term C (tables f82): F0 A + F90 B - a C
-//   "glass_E"   rough glass's directional albedo, reflection + transmission
-//               (table glass_E) at the texel's eta
-//   "glass_Eavg"  its cosine-weighted average over mu (table glass_Eavg)
-//   "spec_E", "spec_Eavg"  the same of the reflection alone (tables spec_E,
-//               spec_Eavg)
+//   "Eavg"      table Eavg at r: 2 int_0^1 E(mu) mu dmu (1D, over roughness)
+//   "sheen_E"   table sheen_E at (mu, the sheen roughness, clamped as
+//               sheenAlphaMin says): the Charlie sheen's directional albedo
+//   "f82"       table f82 at (mu, r): the F82-tint term C (F0 A + F90 B - a C)
+//   "glass_E", "glass_Eavg", "spec_E", "spec_Eavg"  those tables at (mu, r,
+//               eta) and (r, eta): rough glass's directional albedo
+//               (reflection + transmission) and its average over mu, and
+//               the same of the reflection alone; the glass ones 1 within
+//               the model's unitEtaWindow
 //   "disney_diffuse"  Burley's diffuse albedo as Unity HDRP renormalises it:
-//               table burley_E / 1.03571 (preset.cpp, DisneyDiffuseAlbedo), at
-//               perceptual roughness
+//               table burley_E at (mu, the roughness axis itself) / 1.03571
+//   "ltc_m00", "ltc_m20", "ltc_m02", "ltc_m22"  the entries of M^-1 of the
+//               linearly transformed cosine (models/ltc.h) of the lobe that
+//               `table` fits (ltc_ggx by default, ltc_burley, ltc_sheen,
+//               ltc_oren_nayar: its channels m00..m22), fitted over the
+//               texture's whole (mu, roughness) grid at once
+//               (integrators/ltc_fit.h, FitLtcGrid) at the table's
+//               coordinate from the model's alpha; "ltc_m11" its middle
+//               element, 1. GGX with exact Smith forms only
+//   "sheen_B"   the sheen's Schlick-weighted part int D V (1 - o.h)^5 mu_i
+//               (HDRP), by the adaptive quadrature (no table holds it)
+//   "fabric_lambert"  1 - alpha / 2 (HDRP's FabricLambertNoPI)
 //   "zeltner_a", "zeltner_b", "zeltner_R"  Zeltner et al.'s multiple-
 //               scattering sheen (OpenPBR's fuzz): its LTC entries a, b and
 //               reflectance R from the authors' published table
@@ -151,13 +148,6 @@ const char *DescribeAlpha(AlphaMapping alpha);
 //               axis itself), bilinear between its entries as the authors'
 //               renderer reads it; not integrated by lutbake, so with no
 //               bound of their own (a texel's bound is its storage's only)
-//   "ltc_m00", "ltc_m20", "ltc_m02", "ltc_m22", "ltc_m11"  the entries of
-//               M^-1 of the linearly transformed cosine of the model's
-//               ltcLobe (GGX: table ltc_ggx's channels; models/ltc.h), fitted
-//               over the texture's whole (mu, roughness) grid at once
-//               (integrators/ltc_fit.h, FitLtcGrid), scaled as ltcScale
-//               says (ltc_m11 is 1 under kUnitM11); GGX with exact Smith
-//               forms only
 //   "clipped_sphere"  ltc_code's horizon-clipped sphere (LTC_2.w): the form
 //               factor of a spherical cap, clipped at the horizon, over its
 //               unclipped one |F|, at z = 2u - 1 (the cap's axis . n) and
@@ -169,9 +159,31 @@ const char *DescribeAlpha(AlphaMapping alpha);
 // covers the value as stored.
 struct PresetChannel {
   std::string meaning;
+  // The table an LTC entry is a fit of (one that fits a lobe); empty: the
+  // meaning's own (ltc_ggx). No other meaning takes a table here.
+  std::string table = {};
+  // stored = scale * meaning / over + offset, `over` another entry of the
+  // same fit (Unity HDRP scales M^-1 so that m22 = 1: over = "ltc_m22");
+  // empty: none. Only the fit's entries, whose bound is 0, are divided.
+  std::string over = {};
   double scale = 1.0, offset = 0.0;
   double clampMin = -1e300, clampMax = 1e300;
 };
+
+// What a channel reads, from the list of quantities: the registered table
+// (nullptr: a quantity no table holds), the table's channel (its meaning
+// there: "A", "m22"; "" for a fit's m11 or no table), whether the value is
+// the table's LTC fit over the texture's grid, and the lobe and its
+// parameter in words ("sheen (alpha)"; what preset.json states of a fit).
+// Throws std::invalid_argument for an unknown meaning or a table the
+// meaning cannot read.
+struct PresetChannelSource {
+  const TableDefinition *table = nullptr;
+  std::string channel;
+  bool fitted = false;
+  std::string lobe;
+};
+PresetChannelSource SourceOf(const PresetChannel &channel);
 
 // One texture (or embedded array) of a preset.
 struct PresetTexture {
