@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <set>
 
+#include "blocking_calls.h"
 #include "lutbake/formats/writer.h"
 
 namespace lutbake {
@@ -138,7 +139,6 @@ std::string AtomicOutputSet::Add(const std::string &finalPath) {
 void AtomicOutputSet::Write(const std::string &finalPath,
                             const std::function<void(const std::string &)> &write) {
   const std::string path = Add(finalPath);
-  const int fd = entries_.back().fd;
   const auto named = [&](std::string message) {
     for (size_t at = message.find(path); at != std::string::npos;
          at = message.find(path, at + finalPath.size()))
@@ -154,9 +154,26 @@ void AtomicOutputSet::Write(const std::string &finalPath,
   } catch (const std::exception &e) {
     throw IoError("cannot write " + finalPath + ": " + named(e.what()));
   }
-  // Durable before it can get its final name: a crash after the rename
-  // must not leave the name on an empty or partial file.
-  if (::fsync(fd) != 0) throw IoError("cannot write " + finalPath + ": " + Reason());
+  // Made durable (SyncAll, from Commit and LinkInto) before it can get its
+  // final name: a crash after the rename must not leave the name on an
+  // empty or partial file.
+}
+
+void AtomicOutputSet::SyncAll(int alsoSync, const std::string &alsoSyncName) {
+  std::vector<int> fds;
+  std::vector<std::string> names;
+  for (Entry &e : entries_)
+    if (!e.synced) fds.push_back(e.fd), names.push_back(e.finalPath);
+  if (alsoSync >= 0) fds.push_back(alsoSync), names.push_back(alsoSyncName);
+  // All at once (blocking_calls.h): the waits overlap, and the file system
+  // groups the commits.
+  std::vector<int> errors(fds.size(), 0);
+  RunBlockingCalls(fds.size(), [&](size_t k) {
+    if (::fsync(fds[k]) != 0) errors[k] = errno;
+  });
+  for (size_t k = 0; k < fds.size(); ++k)
+    if (errors[k] != 0) throw IoError("cannot write " + names[k] + ": " + std::strerror(errors[k]));
+  for (Entry &e : entries_) e.synced = true;
 }
 
 void AtomicOutputSet::Observe(const char *step, size_t index) const {
@@ -170,7 +187,9 @@ void AtomicOutputSet::Commit() {
     for (const std::string &d : directories) FsyncDirectory(d, d);
   };
   try {
-    // 1. link: the anonymous temporaries get a (locked) name.
+    // 1. link: the temporaries made durable, then the anonymous ones get a
+    // (locked) name.
+    SyncAll();
     for (size_t i = 0; i < entries_.size(); ++i) {
       Entry &e = entries_[i];
       if (!e.namedPath.empty()) continue;
@@ -226,7 +245,8 @@ void AtomicOutputSet::Commit() {
   entries_.clear();
 }
 
-void AtomicOutputSet::LinkInto(const std::string &directory) {
+void AtomicOutputSet::LinkInto(const std::string &directory, int alsoSync) {
+  SyncAll(alsoSync, directory);
   for (const Entry &e : entries_) {
     const std::string target =
         (std::filesystem::path(directory) / std::filesystem::path(e.finalPath).filename()).string();
