@@ -284,15 +284,19 @@ void BakeJobInto(Run &run, const BakeJob &job) {
   if (job.name != job.table->Name()) table.name = job.name;
   table.metadata.insert(table.metadata.end(), job.metadata.begin(), job.metadata.end());
   BakedTable baked;
-  for (const TableFormat *format : run.formats) {
-    if (r.cancellation) r.cancellation->ThrowIfCancelled();
-    const std::unique_ptr<TableWriter> writer = format->makeWriter();
-    const std::string path = run.output.Write(
-        job.name + format->extension,
-        [&](const std::string &temporary) { writer->Write(table, temporary, run.writeOptions); });
+  // The table's files, written at once (the writers only read the table).
+  if (r.cancellation) r.cancellation->ThrowIfCancelled();
+  std::vector<std::pair<std::string, std::function<void(const std::string &)>>> writes;
+  for (const TableFormat *format : run.formats)
+    writes.emplace_back(job.name + format->extension, [&, format](const std::string &temporary) {
+      format->makeWriter()->Write(table, temporary, run.writeOptions);
+    });
+  const std::vector<std::string> paths = run.output.WriteEach(writes);
+  for (size_t k = 0; k < run.formats.size(); ++k) {
+    const TableFormat *format = run.formats[k];
     const BoundSummary bounds = SummarizeStoredBounds(table, format->storage(run.writeOptions));
-    run.result.files.push_back({path, job.name, format->name, bounds.max, bounds.rms});
-    baked.files.push_back(path);
+    run.result.files.push_back({paths[k], job.name, format->name, bounds.max, bounds.rms});
+    baked.files.push_back(paths[k]);
   }
   if (!r.shaders.empty()) {
     run.shapes.push_back(table);

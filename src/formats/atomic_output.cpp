@@ -4,11 +4,13 @@
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/stat.h>
+#include <tbb/parallel_for.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <set>
 
@@ -136,9 +138,12 @@ std::string AtomicOutputSet::Add(const std::string &finalPath) {
   return e.writePath;
 }
 
-void AtomicOutputSet::Write(const std::string &finalPath,
-                            const std::function<void(const std::string &)> &write) {
-  const std::string path = Add(finalPath);
+namespace {
+
+// write(path), its exceptions rethrown as IoError naming finalPath where
+// they named the temporary `path`.
+void WriteThrough(const std::string &finalPath, const std::string &path,
+                  const std::function<void(const std::string &)> &write) {
   const auto named = [&](std::string message) {
     for (size_t at = message.find(path); at != std::string::npos;
          at = message.find(path, at + finalPath.size()))
@@ -154,9 +159,31 @@ void AtomicOutputSet::Write(const std::string &finalPath,
   } catch (const std::exception &e) {
     throw IoError("cannot write " + finalPath + ": " + named(e.what()));
   }
+}
+
+}  // namespace
+
+void AtomicOutputSet::Write(const std::string &finalPath,
+                            const std::function<void(const std::string &)> &write) {
   // Made durable (SyncAll, from Commit and LinkInto) before it can get its
   // final name: a crash after the rename must not leave the name on an
   // empty or partial file.
+  WriteThrough(finalPath, Add(finalPath), write);
+}
+
+void AtomicOutputSet::WriteEach(const std::vector<FileWrite> &files) {
+  std::vector<std::string> paths;
+  for (const FileWrite &file : files) paths.push_back(Add(file.finalPath));
+  std::vector<std::exception_ptr> errors(files.size());
+  tbb::parallel_for(size_t{0}, files.size(), [&](size_t k) {
+    try {
+      WriteThrough(files[k].finalPath, paths[k], files[k].write);
+    } catch (...) {
+      errors[k] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr &error : errors)
+    if (error) std::rethrow_exception(error);
 }
 
 void AtomicOutputSet::SyncAll(int alsoSync, const std::string &alsoSyncName) {

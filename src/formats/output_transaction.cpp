@@ -209,6 +209,19 @@ std::string OutputTransaction::Write(const std::string &fileName,
   return path;
 }
 
+std::vector<std::string> OutputTransaction::WriteEach(
+    const std::vector<std::pair<std::string, std::function<void(const std::string &)>>> &files) {
+  std::vector<AtomicOutputSet::FileWrite> writes;
+  std::vector<std::string> paths;
+  for (const auto &[fileName, write] : files) {
+    paths.push_back(PathOf(fileName));
+    writes.push_back({paths.back(), write});
+  }
+  output_.WriteEach(writes);
+  files_.insert(files_.end(), paths.begin(), paths.end());
+  return paths;
+}
+
 std::string OutputTransaction::WriteText(const std::string &fileName, const std::string &text) {
   const std::string path = PathOf(fileName);
   return Write(fileName, [&](const std::string &temporary) {

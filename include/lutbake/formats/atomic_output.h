@@ -52,6 +52,15 @@ class AtomicOutputSet {
   // write (IoError or another std::exception, such as OpenEXR's) is rethrown
   // as IoError whose message names finalPath where it named the temporary.
   void Write(const std::string &finalPath, const std::function<void(const std::string &)> &write);
+  // Write for each file, the writes run at once (TBB, at most its allowed
+  // parallelism); the temporaries are added in the files' order. When
+  // writes fail, the first of them in that order is thrown, after all have
+  // ended.
+  struct FileWrite {
+    std::string finalPath;
+    std::function<void(const std::string &)> write;
+  };
+  void WriteEach(const std::vector<FileWrite> &files);
   // Steps 1-4 above; throws IoError on failure, after undoing steps 1-3 and
   // removing the temporaries.
   void Commit();
