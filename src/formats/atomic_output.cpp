@@ -165,7 +165,7 @@ void WriteThrough(const std::string &finalPath, const std::string &path,
 
 void AtomicOutputSet::Write(const std::string &finalPath,
                             const std::function<void(const std::string &)> &write) {
-  // Made durable (SyncAll, from Commit and LinkInto) before it can get its
+  // Made durable (Sync, from Commit and LinkInto) before it can get its
   // final name: a crash after the rename must not leave the name on an
   // empty or partial file.
   WriteThrough(finalPath, Add(finalPath), write);
@@ -186,7 +186,7 @@ void AtomicOutputSet::WriteEach(const std::vector<FileWrite> &files) {
     if (error) std::rethrow_exception(error);
 }
 
-void AtomicOutputSet::SyncAll(int alsoSync, const std::string &alsoSyncName) {
+void AtomicOutputSet::Sync(int alsoSync, const std::string &alsoSyncName) {
   std::vector<int> fds;
   std::vector<std::string> names;
   for (Entry &e : entries_)
@@ -216,7 +216,7 @@ void AtomicOutputSet::Commit() {
   try {
     // 1. link: the temporaries made durable, then the anonymous ones get a
     // (locked) name.
-    SyncAll();
+    Sync();
     for (size_t i = 0; i < entries_.size(); ++i) {
       Entry &e = entries_[i];
       if (!e.namedPath.empty()) continue;
@@ -272,8 +272,8 @@ void AtomicOutputSet::Commit() {
   entries_.clear();
 }
 
-void AtomicOutputSet::LinkInto(const std::string &directory, int alsoSync) {
-  SyncAll(alsoSync, directory);
+void AtomicOutputSet::LinkInto(const std::string &directory) {
+  Sync();
   for (const Entry &e : entries_) {
     const std::string target =
         (std::filesystem::path(directory) / std::filesystem::path(e.finalPath).filename()).string();

@@ -322,12 +322,17 @@ bool OutputTransaction::TryExchange(const std::vector<std::string> &oldSetNames,
               std::fwrite(manifestText.data(), 1, manifestText.size(), file) == manifestText.size();
     ok = ok && std::fflush(file) == 0;
     try {
-      if (ok) output_.LinkInto(sibling.string(), ::fileno(file));
+      if (ok) output_.Sync(::fileno(file), (sibling / kSetManifestName).string());
     } catch (const IoError &) {
       ok = false;
     }
     if (file && std::fclose(file) != 0) ok = false;
     if (!ok) return abandon();
+  }
+  try {
+    output_.LinkInto(sibling.string());
+  } catch (const IoError &) {
+    return abandon();
   }
   files_.push_back(PathOf(kSetManifestName));
   // From here the new set lives only in the sibling.

@@ -66,14 +66,17 @@ class AtomicOutputSet {
   void Commit();
   // Removes every temporary (nothing under a final name is touched).
   void Discard();
-  // Instead of Commit: makes every file written durable (fsync, all at
-  // once, together with alsoSync, an open file of the caller's when >= 0),
-  // then links each into `directory` (on the same file system) under its
-  // final file name and forgets the temporaries. The caller installs
-  // `directory` as a whole (OutputTransaction's exchange). Throws IoError,
-  // having linked nothing it keeps, when an fsync or a link fails (an
-  // alsoSync that fails names `directory`).
-  void LinkInto(const std::string &directory, int alsoSync = -1);
+  // Makes every file written so far durable: fsync, all at once, together
+  // with alsoSync (an open file of the caller's, named alsoSyncName in a
+  // message) when >= 0. Commit and LinkInto call it first. Throws IoError
+  // naming the first file (in order) whose fsync failed.
+  void Sync(int alsoSync = -1, const std::string &alsoSyncName = "");
+  // Instead of Commit: Sync, then links every file written into `directory`
+  // (on the same file system) under its final file name, then forgets the
+  // temporaries. The caller installs `directory` as a whole
+  // (OutputTransaction's exchange). Throws IoError, having linked nothing
+  // it keeps, when an fsync or a link fails.
+  void LinkInto(const std::string &directory);
 
   // For tests: called after every rename, link or removal that Commit makes,
   // with its step ("link", "backup", "install", "remove") and the file's
@@ -92,9 +95,6 @@ class AtomicOutputSet {
     bool installed = false;
     bool synced = false;  // fsync'ed since it was written
   };
-  // fsyncs every temporary not yet synced, and alsoSync, concurrently;
-  // throws IoError naming the first (in order) that fails.
-  void SyncAll(int alsoSync = -1, const std::string &alsoSyncName = "");
   void Undo();
   void Observe(const char *step, size_t index) const;
   std::vector<Entry> entries_;
