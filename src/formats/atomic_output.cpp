@@ -4,14 +4,17 @@
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/stat.h>
+#include <tbb/parallel_for.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <set>
 
+#include "blocking_calls.h"
 #include "lutbake/formats/writer.h"
 
 namespace lutbake {
@@ -135,10 +138,12 @@ std::string AtomicOutputSet::Add(const std::string &finalPath) {
   return e.writePath;
 }
 
-void AtomicOutputSet::Write(const std::string &finalPath,
-                            const std::function<void(const std::string &)> &write) {
-  const std::string path = Add(finalPath);
-  const int fd = entries_.back().fd;
+namespace {
+
+// write(path), its exceptions rethrown as IoError naming finalPath where
+// they named the temporary `path`.
+void WriteThrough(const std::string &finalPath, const std::string &path,
+                  const std::function<void(const std::string &)> &write) {
   const auto named = [&](std::string message) {
     for (size_t at = message.find(path); at != std::string::npos;
          at = message.find(path, at + finalPath.size()))
@@ -154,9 +159,48 @@ void AtomicOutputSet::Write(const std::string &finalPath,
   } catch (const std::exception &e) {
     throw IoError("cannot write " + finalPath + ": " + named(e.what()));
   }
-  // Durable before it can get its final name: a crash after the rename
-  // must not leave the name on an empty or partial file.
-  if (::fsync(fd) != 0) throw IoError("cannot write " + finalPath + ": " + Reason());
+}
+
+}  // namespace
+
+void AtomicOutputSet::Write(const std::string &finalPath,
+                            const std::function<void(const std::string &)> &write) {
+  // Made durable (Sync, from Commit and LinkInto) before it can get its
+  // final name: a crash after the rename must not leave the name on an
+  // empty or partial file.
+  WriteThrough(finalPath, Add(finalPath), write);
+}
+
+void AtomicOutputSet::WriteEach(const std::vector<FileWrite> &files) {
+  std::vector<std::string> paths;
+  for (const FileWrite &file : files) paths.push_back(Add(file.finalPath));
+  std::vector<std::exception_ptr> errors(files.size());
+  tbb::parallel_for(size_t{0}, files.size(), [&](size_t k) {
+    try {
+      WriteThrough(files[k].finalPath, paths[k], files[k].write);
+    } catch (...) {
+      errors[k] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr &error : errors)
+    if (error) std::rethrow_exception(error);
+}
+
+void AtomicOutputSet::Sync(int alsoSync, const std::string &alsoSyncName) {
+  std::vector<int> fds;
+  std::vector<std::string> names;
+  for (Entry &e : entries_)
+    if (!e.synced) fds.push_back(e.fd), names.push_back(e.finalPath);
+  if (alsoSync >= 0) fds.push_back(alsoSync), names.push_back(alsoSyncName);
+  // All at once (blocking_calls.h): the waits overlap, and the file system
+  // groups the commits.
+  std::vector<int> errors(fds.size(), 0);
+  RunBlockingCalls(fds.size(), [&](size_t k) {
+    if (::fsync(fds[k]) != 0) errors[k] = errno;
+  });
+  for (size_t k = 0; k < fds.size(); ++k)
+    if (errors[k] != 0) throw IoError("cannot write " + names[k] + ": " + std::strerror(errors[k]));
+  for (Entry &e : entries_) e.synced = true;
 }
 
 void AtomicOutputSet::Observe(const char *step, size_t index) const {
@@ -170,7 +214,9 @@ void AtomicOutputSet::Commit() {
     for (const std::string &d : directories) FsyncDirectory(d, d);
   };
   try {
-    // 1. link: the anonymous temporaries get a (locked) name.
+    // 1. link: the temporaries made durable, then the anonymous ones get a
+    // (locked) name.
+    Sync();
     for (size_t i = 0; i < entries_.size(); ++i) {
       Entry &e = entries_[i];
       if (!e.namedPath.empty()) continue;
@@ -227,6 +273,7 @@ void AtomicOutputSet::Commit() {
 }
 
 void AtomicOutputSet::LinkInto(const std::string &directory) {
+  Sync();
   for (const Entry &e : entries_) {
     const std::string target =
         (std::filesystem::path(directory) / std::filesystem::path(e.finalPath).filename()).string();

@@ -6,6 +6,8 @@
 // edges, that returns a texel's stored value exactly at its centre.
 #include <Imath/half.h>
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -19,12 +21,19 @@ namespace lutbake {
 
 namespace {
 
-std::string FloatLiteral(double value) {
+// Appends value, rounded to float, as a float literal: 9 significant digits
+// (%.9g: std::to_chars with a precision is specified to print as printf
+// does, and is several times faster than snprintf), ".0" where that reads
+// as an integer, and the suffix f.
+void AppendFloatLiteral(double value, std::string *out) {
   char buffer[48];
-  std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(static_cast<float>(value)));
-  std::string s = buffer;
-  if (s.find_first_of(".e") == std::string::npos) s += ".0";
-  return s + "f";
+  char *end =
+      std::to_chars(buffer, buffer + sizeof buffer, static_cast<double>(static_cast<float>(value)),
+                    std::chars_format::general, 9)
+          .ptr;
+  out->append(buffer, end);
+  if (std::none_of(buffer, end, [](char c) { return c == '.' || c == 'e'; })) out->append(".0");
+  out->push_back('f');
 }
 
 // A metadata value on one comment line: line breaks (a quoted argument of the
@@ -269,10 +278,14 @@ class CppHeaderWriter final : public TableWriter {
       }
     } else {
       h << "inline constexpr float kValues[" << size << "] = {";
+      std::string values;
+      values.reserve(18 * table.values.size());
       for (size_t i = 0; i < table.values.size(); ++i) {
-        h << (i % 6 == 0 ? "\n    " : " ") << FloatLiteral(table.values[i])
-          << (i + 1 < table.values.size() ? "," : "");
+        values += i % 6 == 0 ? "\n    " : " ";
+        AppendFloatLiteral(table.values[i], &values);
+        if (i + 1 < table.values.size()) values += ',';
       }
+      h << values;
     }
     h << "};\n";
     h << "static_assert(sizeof(kValues) / sizeof(kValues[0]) == " << size << ",\n"

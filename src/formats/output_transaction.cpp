@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "blocking_calls.h"
 #include "lutbake/core/error.h"
 #include "lutbake/tables/bake.h"
 
@@ -113,7 +114,7 @@ void RetireSibling(const fs::path &sibling, const fs::path &directory) {
   const std::vector<std::string> listed = ReadSetManifest(sibling.string());
   std::error_code ec;
   bool kept = false;
-  std::vector<fs::path> entries;
+  std::vector<fs::path> entries, unlinked;
   for (const auto &entry : fs::directory_iterator(sibling, ec)) entries.push_back(entry.path());
   for (const fs::path &entry : entries) {
     const std::string name = entry.filename().string();
@@ -126,12 +127,15 @@ void RetireSibling(const fs::path &sibling, const fs::path &directory) {
     // Ours, a link to a file the directory holds, or a file the directory
     // now holds a newer one of.
     if (ours || SameInode(entry, there) || fs::exists(fs::symlink_status(there, ec))) {
-      ::unlink(entry.c_str());
+      unlinked.push_back(entry);
     } else if (::renameat2(AT_FDCWD, entry.c_str(), AT_FDCWD, there.c_str(), RENAME_NOREPLACE) !=
                0) {
       kept = true;
     }
   }
+  // All at once (blocking_calls.h: on a file system that discards freed
+  // blocks, each unlink of a written file waits ~4 ms).
+  RunBlockingCalls(unlinked.size(), [&](size_t k) { ::unlink(unlinked[k].c_str()); });
   ::unlink((sibling / kSetManifestName).c_str());
   if (!kept) ::rmdir(sibling.c_str());
 }
@@ -203,6 +207,19 @@ std::string OutputTransaction::Write(const std::string &fileName,
   output_.Write(path, write);
   files_.push_back(path);
   return path;
+}
+
+std::vector<std::string> OutputTransaction::WriteEach(
+    const std::vector<std::pair<std::string, std::function<void(const std::string &)>>> &files) {
+  std::vector<AtomicOutputSet::FileWrite> writes;
+  std::vector<std::string> paths;
+  for (const auto &[fileName, write] : files) {
+    paths.push_back(PathOf(fileName));
+    writes.push_back({paths.back(), write});
+  }
+  output_.WriteEach(writes);
+  files_.insert(files_.end(), paths.begin(), paths.end());
+  return paths;
 }
 
 std::string OutputTransaction::WriteText(const std::string &fileName, const std::string &text) {
@@ -296,13 +313,19 @@ bool OutputTransaction::TryExchange(const std::vector<std::string> &oldSetNames,
   for (const std::string &name : foreign_)
     if (::linkat(AT_FDCWD, (directory / name).c_str(), AT_FDCWD, (sibling / name).c_str(), 0) != 0)
       return abandon();
-  // The list first, durable: whatever a kill leaves in the sibling from here
+  // The list first, durable (fsync'ed together with the set's files, before
+  // any of them is linked): whatever a kill leaves in the sibling from here
   // on is named by it (RetireSibling).
   {
     std::FILE *file = std::fopen((sibling / kSetManifestName).c_str(), "wb");
     bool ok = file &&
               std::fwrite(manifestText.data(), 1, manifestText.size(), file) == manifestText.size();
-    ok = ok && std::fflush(file) == 0 && ::fsync(::fileno(file)) == 0;
+    ok = ok && std::fflush(file) == 0;
+    try {
+      if (ok) output_.Sync(::fileno(file), (sibling / kSetManifestName).string());
+    } catch (const IoError &) {
+      ok = false;
+    }
     if (file && std::fclose(file) != 0) ok = false;
     if (!ok) return abandon();
   }

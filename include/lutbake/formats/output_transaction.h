@@ -34,6 +34,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lutbake/core/cancellation.h"
@@ -68,6 +69,11 @@ class OutputTransaction {
   // Returns the final path. Throws IoError naming the final path.
   std::string Write(const std::string &fileName,
                     const std::function<void(const std::string &temporaryPath)> &write);
+  // Write for several files, their writes run at once (AtomicOutputSet::
+  // WriteEach); `files` holds (fileName, write). Returns the final paths, in
+  // that order.
+  std::vector<std::string> WriteEach(
+      const std::vector<std::pair<std::string, std::function<void(const std::string &)>>> &files);
   // Writes `text` as fileName's whole content.
   std::string WriteText(const std::string &fileName, const std::string &text);
   // Throws Cancelled if `cancellation` is cancelled, else installs every file
