@@ -36,7 +36,15 @@ using graded::Panel;
 using graded::Point;
 
 constexpr int kLevels = 6;
-constexpr int kNodes[kLevels] = {5, 7, 10, 14, 19, 25};
+// Gauss nodes per panel at each level, in all three variables (a level
+// costs n^3 a panel). Past the first pair (5 and 7, whose difference guards
+// against chance agreement: a start at 5 and 6 left three values outside
+// their bounds, up to 18x) the steps are smaller than the albedo's ladder
+// (9, 12, 16, 21 instead of 10, 14, 19, 25): 22% fewer G2 values on 8
+// roughnesses x 29 etas (the default axis and 1/128, 0.1, 1 -+ 1e-4, 10,
+// 128), every value within its bound of the rule at 1e-9 (worst error /
+// bound 0.68 for glass; 0.48 with the old ladder).
+constexpr int kNodes[kLevels] = {5, 7, 9, 12, 16, 21};
 constexpr double kBoundFloor = 1e-10;
 constexpr double kDifferenceFactor = 2.0;
 constexpr double kToleranceShare = 0.2;

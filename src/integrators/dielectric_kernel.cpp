@@ -166,28 +166,30 @@ HWY_INLINE V ArcLanes(D d, const ArcConstants &k, V v, V ruleW) {
   const V one = hn::Set(d, 1.0), two = hn::Set(d, 2.0), zero = hn::Zero(d);
   const V alpha2 = hn::Set(d, k.alpha2);
   const V v2 = hn::Mul(v, v);
-  const V q = hn::Div(one, hn::Add(one, v2));
-  const V cosPsi = hn::Mul(hn::Sub(one, v2), q);
-  const V o = hn::Add(hn::Set(d, k.a), hn::Mul(hn::Set(d, k.ka), cosPsi));
-  const V i = hn::Mul(hn::Add(hn::Set(d, k.b), hn::Mul(hn::Set(d, k.kb), cosPsi)),
+  const V den = hn::Add(one, v2), num = hn::Sub(one, v2);
+  const V o = hn::Add(hn::Mul(hn::Set(d, k.a), den), hn::Mul(hn::Set(d, k.ka), num));
+  const V i = hn::Mul(hn::Add(hn::Mul(hn::Set(d, k.b), den), hn::Mul(hn::Set(d, k.kb), num)),
                       hn::Set(d, k.invDivisor));
-  const V mo0 = hn::Min(o, one), mi0 = hn::Min(i, one);
+  const V mo0 = hn::Min(o, den), mi0 = hn::Min(i, den);
   const auto valid = hn::And(hn::Gt(mo0, zero), hn::Gt(mi0, zero));
   // Invalid pairs computed at 1 (finite) and dropped below.
-  const V mo = hn::IfThenElse(valid, mo0, one), mi = hn::IfThenElse(valid, mi0, one);
-  const V so = hn::Mul(alpha2, hn::Max(hn::Mul(hn::Sub(one, mo), hn::Add(one, mo)), zero));
-  const V si = hn::Mul(alpha2, hn::Max(hn::Mul(hn::Sub(one, mi), hn::Add(one, mi)), zero));
+  const V mo = hn::IfThenElse(valid, mo0, den), mi = hn::IfThenElse(valid, mi0, den);
+  const V so = hn::Mul(alpha2, hn::Max(hn::Mul(hn::Sub(den, mo), hn::Add(den, mo)), zero));
+  const V si = hn::Mul(alpha2, hn::Max(hn::Mul(hn::Sub(den, mi), hn::Add(den, mi)), zero));
   const V dO = hn::Mul(two, hn::Add(hn::Sqrt(hn::Add(hn::Mul(mo, mo), so)), mo));
   const V dI = hn::Mul(two, hn::Add(hn::Sqrt(hn::Add(hn::Mul(mi, mi), si)), mi));
-  V g;
+  V numerator, denominator;
   if (k.smith == SmithForm::kCorrelated) {
     const V p = hn::Mul(hn::Mul(mo, mi), hn::Mul(dO, dI));
-    g = hn::Div(p, hn::Add(hn::Add(p, hn::Mul(hn::Mul(mi, so), dI)), hn::Mul(hn::Mul(mo, si), dO)));
+    numerator = p;
+    denominator = hn::Add(hn::Add(p, hn::Mul(hn::Mul(mi, so), dI)), hn::Mul(hn::Mul(mo, si), dO));
   } else {
     const V po = hn::Mul(mo, dO), pi = hn::Mul(mi, dI);
-    g = hn::Div(hn::Mul(po, pi), hn::Mul(hn::Add(po, so), hn::Add(pi, si)));
+    numerator = hn::Mul(po, pi);
+    denominator = hn::Mul(hn::Add(po, so), hn::Add(pi, si));
   }
-  return hn::Mul(hn::Mul(ruleW, q), hn::IfThenElseZero(valid, g));
+  const V g = hn::Div(hn::Mul(ruleW, numerator), hn::Mul(den, denominator));
+  return hn::IfThenElseZero(valid, g);
 }
 
 void ArcTermsImpl(const ArcConstants &k, const double *v, const double *ruleW, size_t n,
@@ -226,23 +228,27 @@ void ArcTerms(const ArcConstants &constants, const double *v, const double *rule
 }
 
 double ArcTermScalar(const ArcConstants &k, double v, double ruleW) {
-  const double q = 1.0 / (1.0 + v * v);
-  const double cosPsi = (1.0 - v * v) * q;
-  const double o = k.a + k.ka * cosPsi, i = (k.b + k.kb * cosPsi) * k.invDivisor;
-  const double mo = o < 1.0 ? o : 1.0, mi = i < 1.0 ? i : 1.0;
-  if (!(mo > 0.0 && mi > 0.0)) return ruleW * q * 0.0;
-  const double so = k.alpha2 * std::max((1.0 - mo) * (1.0 + mo), 0.0);
-  const double si = k.alpha2 * std::max((1.0 - mi) * (1.0 + mi), 0.0);
+  // Every cosine and length times den = 1 + v^2 (cos(psi) = num / den): G2
+  // is homogeneous of degree 0 in them, and the one division also takes
+  // the measure's 1 / den.
+  const double den = 1.0 + v * v, num = 1.0 - v * v;
+  const double o = k.a * den + k.ka * num, i = (k.b * den + k.kb * num) * k.invDivisor;
+  const double mo = o < den ? o : den, mi = i < den ? i : den;
+  if (!(mo > 0.0 && mi > 0.0)) return 0.0;
+  const double so = k.alpha2 * std::max((den - mo) * (den + mo), 0.0);
+  const double si = k.alpha2 * std::max((den - mi) * (den + mi), 0.0);
   const double dO = 2.0 * (std::sqrt(mo * mo + so) + mo), dI = 2.0 * (std::sqrt(mi * mi + si) + mi);
-  double g = 0.0;
+  double numerator = 0.0, denominator = 1.0;
   if (k.smith == SmithForm::kCorrelated) {
     const double p = (mo * mi) * (dO * dI);
-    g = p / (p + (mi * so) * dI + (mo * si) * dO);
+    numerator = p;
+    denominator = (p + (mi * so) * dI) + (mo * si) * dO;
   } else {
     const double po = mo * dO, pi = mi * dI;
-    g = (po * pi) / ((po + so) * (pi + si));
+    numerator = po * pi;
+    denominator = (po + so) * (pi + si);
   }
-  return ruleW * q * g;
+  return (ruleW * numerator) / (den * denominator);
 }
 
 void DielectricTerms(const DielectricConstants &constants, double sc, bool tail, const double *v,
