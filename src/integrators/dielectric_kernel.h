@@ -36,7 +36,10 @@ struct DielectricConstants {
 // F and 1 - F as DielectricFresnel writes them, mu_t = ((c - W) h.z - mu_o)
 // / eta with c - W = (1 - eta^2) / (c + W), G2 / G1 and Lambda as smith.h and
 // ggx.h write them (the two divisions by the Fresnel denominators' squares
-// shared by r and t). Agrees with DielectricFacetWeight to a few ulps.
+// shared by r and t; -mu_t and both G2 / G1 kept as numerator over
+// denominator, so that one division gives the weight, and in
+// DielectricTerms the whole term). Agrees with DielectricFacetWeight to a
+// few ulps.
 void DielectricWeights(const DielectricConstants &constants, const double *c, const double *hz,
                        const double *muR, size_t n, double *w);
 
