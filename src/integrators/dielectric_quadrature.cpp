@@ -20,6 +20,8 @@ namespace lutbake {
 
 namespace {
 
+using graded::AppendPanel;
+using graded::AppendPoint;
 using graded::BuildPanels;
 using graded::GradeToward;
 using graded::MapNode;
@@ -407,11 +409,11 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
     };
     // Core: x = T / alpha in [0, min(T_s, T_end) / alpha].
     const double coreEnd = std::min(T_s, T_end);
-    points.push_back({0.0, 0.0, 0.0});
+    AppendPoint(&points, 0.0, 0.0, 0.0);
     for (size_t k = 0; k < kinks.size(); ++k)
       if (interior(k) && kinks[k].T < coreEnd)
-        points.push_back({kinks[k].T / alpha, kinks[k].below / alpha, kinks[k].above / alpha,
-                          kinks[k].sqBelow, kinks[k].sqAbove});
+        AppendPoint(&points, kinks[k].T / alpha, kinks[k].below / alpha, kinks[k].above / alpha,
+                    kinks[k].sqBelow, kinks[k].sqAbove);
     const bool coreEndsAtFacet = T_end <= T_s;
     Point coreLast{coreEnd / alpha, coreEndsAtFacet ? 0.0 : sBelow / alpha, 0.0,
                    !coreEndsAtFacet && qBelow, false};
@@ -442,10 +444,10 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
       for (size_t r = kinks.size(); r-- > 0;)
         if (interior(r) && kinks[r].T > T_s) {
           const double dw = alpha / (kinks[r].T * kinks[r].T);  // |dw / dT|
-          points.push_back({alpha / kinks[r].T, kinks[r].above * dw, kinks[r].below * dw,
-                            kinks[r].sqAbove, kinks[r].sqBelow});
+          AppendPoint(&points, alpha / kinks[r].T, kinks[r].above * dw, kinks[r].below * dw,
+                      kinks[r].sqAbove, kinks[r].sqBelow);
         }
-      points.push_back({alpha / T_s, sAbove * alpha / (T_s * T_s), 0.0, qAbove, false});
+      AppendPoint(&points, alpha / T_s, sAbove * alpha / (T_s * T_s), 0.0, qAbove, false);
       for (int k = 0; k < nBranch; ++k) branchX[k] = alpha / branch[k];
       const double tailRoot = MarkStartRoot(branchX, nBranch, &points);
       for (Point &point : points) point.keep = s.innerKeep;
@@ -461,10 +463,10 @@ double Inner(const Setup &s, double cosPhi, double sinPhi, int n, uint64_t *eval
   }
   // Beckmann: t = T / alpha in [0, min(7, T_end / alpha)].
   const double tEnd = std::min(kBeckmannCut, T_end / alpha);
-  points.push_back({0.0, 0.0, 0.0});
+  AppendPoint(&points, 0.0, 0.0, 0.0);
   for (const Kink &k : kinks)
     if (k.T / alpha < tEnd)
-      points.push_back({k.T / alpha, k.below / alpha, k.above / alpha, k.sqBelow, k.sqAbove});
+      AppendPoint(&points, k.T / alpha, k.below / alpha, k.above / alpha, k.sqBelow, k.sqAbove);
   Point last{tEnd, 0.0, 0.0};
   if (T_end / alpha <= kBeckmannCut && s.grazingScale > 0.0)
     last.below = s.grazingScale / std::abs(DcDT(sc, s.mu_o, T_end)) / alpha;
@@ -641,12 +643,12 @@ void OuterBreaks(const Setup &s, std::vector<OuterBreak> *out) {
 std::vector<Panel> OuterPanels(const Setup &s, const OuterGrid &grid) {
   std::vector<Panel> panels;
   if (s.s_o == 0.0) {  // normal view: nothing depends on phi
-    panels.push_back({0.0, kPi});
+    AppendPanel(&panels, 0.0, kPi);
     return panels;
   }
   std::vector<Point> points;
-  points.push_back({0.0, 0.0, 0.0});
-  points.push_back({kPi, 0.0, 0.0});
+  AppendPoint(&points, 0.0, 0.0, 0.0);
+  AppendPoint(&points, kPi, 0.0, 0.0);
   double a = std::asinh(s.mu_o / s.s_o);
   if (s.cc2 > 0.0) {
     // The total-reflection circle passes within |mu_o - c_crit| of the normal,
@@ -661,7 +663,7 @@ std::vector<Panel> OuterPanels(const Setup &s, const OuterGrid &grid) {
     a = std::min(a, peak);
   }
   a = std::max(a, kSmallestScale);
-  points.push_back({0.5 * kPi, a, a, false, false, grid.keep});
+  AppendPoint(&points, 0.5 * kPi, a, a, false, false, grid.keep);
   thread_local std::vector<OuterBreak> breaks;
   OuterBreaks(s, &breaks);
   for (const OuterBreak &b : breaks) {
@@ -673,7 +675,7 @@ std::vector<Panel> OuterPanels(const Setup &s, const OuterGrid &grid) {
       double scale = b.layered ? std::max(grid.layerScale, 0.25 * b.layer) : grid.azimuthScale;
       const double g = std::max(std::abs(at - 0.5 * kPi), a);
       if (!(scale > 0.0 && scale < g)) scale = g;
-      points.push_back({at, scale, scale, true, true, grid.keep});
+      AppendPoint(&points, at, scale, scale, true, true, grid.keep);
     }
   }
   std::sort(points.begin(), points.end(), [](const Point &x, const Point &y) { return x.v < y.v; });
