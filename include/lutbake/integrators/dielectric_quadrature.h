@@ -188,7 +188,7 @@ DielectricIntegral IntegrateDielectricAverageOverAlbedo(NdfKind ndf, SmithForm s
 // 1 / sqrt(eta^2 + 1)); in theta at tan(theta) = c_crit / eta (eta < 1,
 // where c = h_s crosses c_crit: mapped quadratically on both sides), GGX's
 // split T = alpha, and toward theta = pi/2 (w = 0, from alpha / 4). Level k
-// takes n(k) = 5, 7, 9, 12, 16, 21 Gauss nodes per panel in all three
+// takes n(k) = 5, 7, 10, 14, 19, 25 Gauss nodes per panel in all three
 // variables; every outer panel at levels 0 and 1, then the one with the
 // largest level difference a level further (split in two past the last)
 // until 2 sum_p |V_p,k - V_p,k-1| <= 0.7 tolerance. Bound: 2 sum_p |V_p,k -
