@@ -16,42 +16,47 @@ namespace HWY_NAMESPACE {
 
 namespace hn = hwy::HWY_NAMESPACE;
 
-// G2 / G1(o) of smith.h at m in (0, 1] (lanes where `valid`; others 0),
-// with L = m Lambda(m) = a2s2 / (2 (root + m)), root = sqrt(m^2 + a2s2),
-// a2s2 = alpha^2 (1 - m)(1 + m) (ggx.h):
+// G2 / G1(o) of smith.h at the cosine m = mN / mD (mD > 0; lanes where
+// `valid`, others 0), as a numerator and a denominator (the caller divides
+// once for everything), with m clamped to at most 1. With L = m Lambda(m) =
+// a2s2 / (2 (root + m)), root = sqrt(m^2 + a2s2), a2s2 = alpha^2 (1 - m)(1 +
+// m) (ggx.h):
 //   correlated: m (mu_o + L_o) / (mu_o m + m L_o + mu_o L),
 //   separable:  m / (m + L),
-// both multiplied through by d = 2 (root + m) (one division, not two):
-//   correlated: m (mu_o + L_o) d / ((mu_o m + m L_o) d + mu_o a2s2),
-//   separable:  m d / (m d + a2s2).
+// both multiplied through by d = 2 (root + m), and every length by mD (the
+// ratio is homogeneous of degree 0 in m, root and d; a2s2 of degree 2):
+//   correlated: mN (mu_o + L_o) d' / ((mu_o mN + mN L_o) d' + mu_o a2s2'),
+//   separable:  mN d' / (mN d' + a2s2'),
+// a2s2' = alpha^2 (mD - mN)(mD + mN), d' = 2 (sqrt(mN^2 + a2s2') + mN).
 template <class D, class V = hn::Vec<D>>
-HWY_INLINE V SmithRatio(D d, const DielectricConstants &k, V m, hn::Mask<D> valid) {
-  const V one = hn::Set(d, 1.0), two = hn::Set(d, 2.0), zero = hn::Zero(d);
+HWY_INLINE void SmithParts(D d, const DielectricConstants &k, V mN, V mD, hn::Mask<D> valid,
+                           V *numerator, V *denominator) {
+  const V two = hn::Set(d, 2.0), zero = hn::Zero(d);
   const V alpha2 = hn::Set(d, k.alpha * k.alpha);
   // Lanes outside `valid` computed at m = 1 (finite everywhere), then zeroed.
-  m = hn::IfThenElse(valid, m, one);
-  const V a2s2 = hn::Mul(alpha2, hn::Max(zero, hn::Mul(hn::Sub(one, m), hn::Add(one, m))));
+  const V m = hn::IfThenElse(valid, hn::Min(mN, mD), mD);
+  const V a2s2 = hn::Mul(alpha2, hn::Max(zero, hn::Mul(hn::Sub(mD, m), hn::Add(mD, m))));
   const V root = hn::Sqrt(hn::Add(hn::Mul(m, m), a2s2));
   const V dd = hn::Mul(two, hn::Add(root, m));
-  V g;
   if (k.smith == SmithForm::kCorrelated) {
     const V mu_o = hn::Set(d, k.mu_o), L_o = hn::Set(d, k.L_o);
-    const V denom =
+    *denominator =
         hn::Add(hn::Mul(hn::Add(hn::Mul(mu_o, m), hn::Mul(m, L_o)), dd), hn::Mul(mu_o, a2s2));
-    g = hn::Div(hn::Mul(hn::Mul(m, hn::Set(d, k.mu_o + k.L_o)), dd), denom);
+    *numerator = hn::IfThenElseZero(valid, hn::Mul(hn::Mul(m, hn::Set(d, k.mu_o + k.L_o)), dd));
   } else {
     const V md = hn::Mul(m, dd);
-    g = hn::Div(md, hn::Add(md, a2s2));
+    *denominator = hn::Add(md, a2s2);
+    *numerator = hn::IfThenElseZero(valid, md);
   }
-  return hn::IfThenElseZero(valid, g);
 }
 
+// The facet weight as wN / wD (wD > 0), before the clamp to at most 1 and
+// the mask of visible facets (c > 0).
 template <class D, class V = hn::Vec<D>>
-HWY_INLINE V WeightLanes(D d, const DielectricConstants &k, V c, V hz, V muR) {
+HWY_INLINE void WeightParts(D d, const DielectricConstants &k, V c, V hz, V muR, V *wN, V *wD) {
   const V one = hn::Set(d, 1.0), zero = hn::Zero(d), half = hn::Set(d, 0.5), four = hn::Set(d, 4.0);
   const double e2m1s = (k.eta - 1.0) * (k.eta + 1.0);
   const V e2m1 = hn::Set(d, e2m1s), eta2 = hn::Set(d, k.eta * k.eta);
-  const auto visible = hn::Gt(c, zero);
   const V cc = hn::Min(hn::Max(c, zero), one);
   const V W2 = hn::Add(e2m1, hn::Mul(cc, cc));
   const auto refracts = hn::Gt(W2, zero);
@@ -75,17 +80,34 @@ HWY_INLINE V WeightLanes(D d, const DielectricConstants &k, V c, V hz, V muR) {
   const V T =
       hn::IfThenElseZero(refracts, hn::Min(hn::Max(hn::Mul(half, hn::Add(ts, tp)), zero), one));
   const auto reflects = hn::And(hn::Gt(muR, zero), hn::Gt(F, zero));
-  V w = hn::Mul(F, SmithRatio(d, k, hn::Min(muR, one), reflects));
+  V nR, dR;
+  SmithParts(d, k, muR, one, reflects, &nR, &dR);
   if (k.lobes == DielectricLobes::kReflectionAndTransmission) {
-    // c - W = (1 - eta^2) / (c + W), exact at eta = 1; c + W > 0 where T > 0.
+    // -mu_t = (mu_o - (c - W) h.z) / eta with c - W = (1 - eta^2) / (c + W)
+    // (exact at eta = 1), = (mu_o (c + W) + (eta^2 - 1) h.z) / (eta (c + W));
+    // c + W > 0 where T > 0.
     const auto transmits = hn::Gt(T, zero);
     const V cpw = hn::IfThenElse(transmits, hn::Add(c, W), one);
-    const V cmw = hn::Div(hn::Neg(e2m1), cpw);
-    const V mu_t = hn::Mul(hn::Sub(hn::Mul(cmw, hz), hn::Set(d, k.mu_o)), hn::Set(d, 1.0 / k.eta));
-    const auto below = hn::And(transmits, hn::Lt(mu_t, zero));
-    w = hn::Add(w, hn::Mul(T, SmithRatio(d, k, hn::Min(hn::Neg(mu_t), one), below)));
+    const V tN = hn::Add(hn::Mul(hn::Set(d, k.mu_o), cpw), hn::Mul(e2m1, hz));
+    const V tD = hn::Mul(hn::Set(d, k.eta), cpw);
+    const auto below = hn::And(transmits, hn::Gt(tN, zero));
+    V nT, dT;
+    SmithParts(d, k, tN, tD, below, &nT, &dT);
+    // F nR / dR + T nT / dT over the common denominator.
+    *wN = hn::Add(hn::Mul(hn::Mul(F, nR), dT), hn::Mul(hn::Mul(T, nT), dR));
+    *wD = hn::Mul(dR, dT);
+  } else {
+    *wN = hn::Mul(F, nR);
+    *wD = dR;
   }
-  return hn::IfThenElseZero(visible, hn::Min(w, one));
+}
+
+// The weight itself: min(wN, wD) / wD (at most 1), 0 where c <= 0.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V WeightLanes(D d, const DielectricConstants &k, V c, V hz, V muR) {
+  V wN, wD;
+  WeightParts(d, k, c, hz, muR, &wN, &wD);
+  return hn::IfThenElseZero(hn::Gt(c, hn::Zero(d)), hn::Div(hn::Min(wN, wD), wD));
 }
 
 constexpr size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
@@ -124,17 +146,22 @@ HWY_INLINE V TermLanes(D d, const DielectricConstants &k, V sc, bool tail, V v, 
     cosTheta = hn::Mul(v, invR);
     sinTheta = hn::Mul(alpha, invR);
     c = hn::Add(hn::Mul(sc, sinTheta), hn::Mul(mu_o, cosTheta));
-    numerator = hn::Div(hn::Mul(hn::Mul(two, c), r), q2);
+    numerator = hn::Mul(hn::Mul(two, c), r);
   } else {
     const V T = hn::Mul(alpha, v);
     cosTheta = hn::Div(one, hn::Sqrt(hn::Add(one, hn::Mul(T, T))));
     sinTheta = hn::Mul(T, cosTheta);
     c = hn::Add(hn::Mul(sc, sinTheta), hn::Mul(mu_o, cosTheta));
-    numerator = hn::Div(hn::Mul(hn::Mul(hn::Add(hn::Mul(sc, T), mu_o), two), v), q2);
+    numerator = hn::Mul(hn::Mul(hn::Add(hn::Mul(sc, T), mu_o), two), v);
   }
   const V muR = hn::Sub(hn::Mul(hn::Mul(two, c), cosTheta), mu_o);
-  const V w = WeightLanes(d, k, c, cosTheta, muR);
-  return hn::Mul(ruleJac, hn::Mul(hn::Mul(numerator, hn::Set(d, k.invNorm)), w));
+  // ruleJac numerator / q2 invNorm w, w = min(wN, wD) / wD: one division.
+  V wN, wD;
+  WeightParts(d, k, c, cosTheta, muR, &wN, &wD);
+  const V term =
+      hn::Div(hn::Mul(hn::Mul(ruleJac, hn::Mul(numerator, hn::Set(d, k.invNorm))), hn::Min(wN, wD)),
+              hn::Mul(q2, wD));
+  return hn::IfThenElseZero(hn::Gt(c, hn::Zero(d)), term);
 }
 
 void DielectricTermsImpl(const DielectricConstants &k, double sc, bool tail, const double *v,
@@ -166,28 +193,30 @@ HWY_INLINE V ArcLanes(D d, const ArcConstants &k, V v, V ruleW) {
   const V one = hn::Set(d, 1.0), two = hn::Set(d, 2.0), zero = hn::Zero(d);
   const V alpha2 = hn::Set(d, k.alpha2);
   const V v2 = hn::Mul(v, v);
-  const V q = hn::Div(one, hn::Add(one, v2));
-  const V cosPsi = hn::Mul(hn::Sub(one, v2), q);
-  const V o = hn::Add(hn::Set(d, k.a), hn::Mul(hn::Set(d, k.ka), cosPsi));
-  const V i = hn::Mul(hn::Add(hn::Set(d, k.b), hn::Mul(hn::Set(d, k.kb), cosPsi)),
+  const V den = hn::Add(one, v2), num = hn::Sub(one, v2);
+  const V o = hn::Add(hn::Mul(hn::Set(d, k.a), den), hn::Mul(hn::Set(d, k.ka), num));
+  const V i = hn::Mul(hn::Add(hn::Mul(hn::Set(d, k.b), den), hn::Mul(hn::Set(d, k.kb), num)),
                       hn::Set(d, k.invDivisor));
-  const V mo0 = hn::Min(o, one), mi0 = hn::Min(i, one);
+  const V mo0 = hn::Min(o, den), mi0 = hn::Min(i, den);
   const auto valid = hn::And(hn::Gt(mo0, zero), hn::Gt(mi0, zero));
   // Invalid pairs computed at 1 (finite) and dropped below.
-  const V mo = hn::IfThenElse(valid, mo0, one), mi = hn::IfThenElse(valid, mi0, one);
-  const V so = hn::Mul(alpha2, hn::Max(hn::Mul(hn::Sub(one, mo), hn::Add(one, mo)), zero));
-  const V si = hn::Mul(alpha2, hn::Max(hn::Mul(hn::Sub(one, mi), hn::Add(one, mi)), zero));
+  const V mo = hn::IfThenElse(valid, mo0, den), mi = hn::IfThenElse(valid, mi0, den);
+  const V so = hn::Mul(alpha2, hn::Max(hn::Mul(hn::Sub(den, mo), hn::Add(den, mo)), zero));
+  const V si = hn::Mul(alpha2, hn::Max(hn::Mul(hn::Sub(den, mi), hn::Add(den, mi)), zero));
   const V dO = hn::Mul(two, hn::Add(hn::Sqrt(hn::Add(hn::Mul(mo, mo), so)), mo));
   const V dI = hn::Mul(two, hn::Add(hn::Sqrt(hn::Add(hn::Mul(mi, mi), si)), mi));
-  V g;
+  V numerator, denominator;
   if (k.smith == SmithForm::kCorrelated) {
     const V p = hn::Mul(hn::Mul(mo, mi), hn::Mul(dO, dI));
-    g = hn::Div(p, hn::Add(hn::Add(p, hn::Mul(hn::Mul(mi, so), dI)), hn::Mul(hn::Mul(mo, si), dO)));
+    numerator = p;
+    denominator = hn::Add(hn::Add(p, hn::Mul(hn::Mul(mi, so), dI)), hn::Mul(hn::Mul(mo, si), dO));
   } else {
     const V po = hn::Mul(mo, dO), pi = hn::Mul(mi, dI);
-    g = hn::Div(hn::Mul(po, pi), hn::Mul(hn::Add(po, so), hn::Add(pi, si)));
+    numerator = hn::Mul(po, pi);
+    denominator = hn::Mul(hn::Add(po, so), hn::Add(pi, si));
   }
-  return hn::Mul(hn::Mul(ruleW, q), hn::IfThenElseZero(valid, g));
+  const V g = hn::Div(hn::Mul(ruleW, numerator), hn::Mul(den, denominator));
+  return hn::IfThenElseZero(valid, g);
 }
 
 void ArcTermsImpl(const ArcConstants &k, const double *v, const double *ruleW, size_t n,
@@ -226,23 +255,27 @@ void ArcTerms(const ArcConstants &constants, const double *v, const double *rule
 }
 
 double ArcTermScalar(const ArcConstants &k, double v, double ruleW) {
-  const double q = 1.0 / (1.0 + v * v);
-  const double cosPsi = (1.0 - v * v) * q;
-  const double o = k.a + k.ka * cosPsi, i = (k.b + k.kb * cosPsi) * k.invDivisor;
-  const double mo = o < 1.0 ? o : 1.0, mi = i < 1.0 ? i : 1.0;
-  if (!(mo > 0.0 && mi > 0.0)) return ruleW * q * 0.0;
-  const double so = k.alpha2 * std::max((1.0 - mo) * (1.0 + mo), 0.0);
-  const double si = k.alpha2 * std::max((1.0 - mi) * (1.0 + mi), 0.0);
+  // Every cosine and length times den = 1 + v^2 (cos(psi) = num / den): G2
+  // is homogeneous of degree 0 in them, and the one division also takes
+  // the measure's 1 / den.
+  const double den = 1.0 + v * v, num = 1.0 - v * v;
+  const double o = k.a * den + k.ka * num, i = (k.b * den + k.kb * num) * k.invDivisor;
+  const double mo = o < den ? o : den, mi = i < den ? i : den;
+  if (!(mo > 0.0 && mi > 0.0)) return 0.0;
+  const double so = k.alpha2 * std::max((den - mo) * (den + mo), 0.0);
+  const double si = k.alpha2 * std::max((den - mi) * (den + mi), 0.0);
   const double dO = 2.0 * (std::sqrt(mo * mo + so) + mo), dI = 2.0 * (std::sqrt(mi * mi + si) + mi);
-  double g = 0.0;
+  double numerator = 0.0, denominator = 1.0;
   if (k.smith == SmithForm::kCorrelated) {
     const double p = (mo * mi) * (dO * dI);
-    g = p / (p + (mi * so) * dI + (mo * si) * dO);
+    numerator = p;
+    denominator = (p + (mi * so) * dI) + (mo * si) * dO;
   } else {
     const double po = mo * dO, pi = mi * dI;
-    g = (po * pi) / ((po + so) * (pi + si));
+    numerator = po * pi;
+    denominator = (po + so) * (pi + si);
   }
-  return ruleW * q * g;
+  return (ruleW * numerator) / (den * denominator);
 }
 
 void DielectricTerms(const DielectricConstants &constants, double sc, bool tail, const double *v,
@@ -257,20 +290,26 @@ void DielectricWeights(const DielectricConstants &constants, const double *c, co
 
 namespace {
 
-double SmithRatioScalar(const DielectricConstants &k, double m) {
-  const double a2s2 = k.alpha * k.alpha * std::max(0.0, (1.0 - m) * (1.0 + m));
+// SmithParts, one lane.
+void SmithPartsScalar(const DielectricConstants &k, double mN, double mD, bool valid,
+                      double *numerator, double *denominator) {
+  const double m = valid ? std::min(mN, mD) : mD;
+  const double a2s2 = k.alpha * k.alpha * std::max(0.0, (mD - m) * (mD + m));
   const double root = std::sqrt(m * m + a2s2);
   const double dd = 2.0 * (root + m);
-  if (k.smith == SmithForm::kCorrelated)
-    return m * (k.mu_o + k.L_o) * dd / ((k.mu_o * m + m * k.L_o) * dd + k.mu_o * a2s2);
-  const double md = m * dd;
-  return md / (md + a2s2);
+  if (k.smith == SmithForm::kCorrelated) {
+    *denominator = (k.mu_o * m + m * k.L_o) * dd + k.mu_o * a2s2;
+    *numerator = valid ? m * (k.mu_o + k.L_o) * dd : 0.0;
+  } else {
+    const double md = m * dd;
+    *denominator = md + a2s2;
+    *numerator = valid ? md : 0.0;
+  }
 }
 
 }  // namespace
 
 double DielectricWeightScalar(const DielectricConstants &k, double c, double hz, double muR) {
-  if (!(c > 0.0)) return 0.0;
   const double e2m1 = (k.eta - 1.0) * (k.eta + 1.0), eta2 = k.eta * k.eta;
   const double cc = std::min(std::max(c, 0.0), 1.0);
   const double W2 = e2m1 + cc * cc;
@@ -287,14 +326,20 @@ double DielectricWeightScalar(const DielectricConstants &k, double c, double hz,
     F = std::min(std::max(0.5 * (rs * rs + rp * rp), 0.0), 1.0);
     T = std::min(std::max(0.5 * (ts + tp), 0.0), 1.0);
   }
-  double w = 0.0;
-  if (muR > 0.0 && F > 0.0) w = F * SmithRatioScalar(k, std::min(muR, 1.0));
-  if (k.lobes == DielectricLobes::kReflectionAndTransmission && T > 0.0) {
-    const double cmw = -e2m1 / (c + W);
-    const double mu_t = (cmw * hz - k.mu_o) * (1.0 / k.eta);
-    if (mu_t < 0.0) w = w + T * SmithRatioScalar(k, std::min(-mu_t, 1.0));
+  double nR = 0.0, dR = 1.0;
+  SmithPartsScalar(k, muR, 1.0, muR > 0.0 && F > 0.0, &nR, &dR);
+  double wN = F * nR, wD = dR;
+  if (k.lobes == DielectricLobes::kReflectionAndTransmission) {
+    const bool transmits = T > 0.0;
+    const double cpw = transmits ? c + W : 1.0;
+    const double tN = k.mu_o * cpw + e2m1 * hz, tD = k.eta * cpw;
+    double nT = 0.0, dT = 1.0;
+    SmithPartsScalar(k, tN, tD, transmits && tN > 0.0, &nT, &dT);
+    wN = (F * nR) * dT + (T * nT) * dR;
+    wD = dR * dT;
   }
-  return std::min(w, 1.0);
+  if (!(c > 0.0)) return 0.0;
+  return std::min(wN, wD) / wD;
 }
 
 }  // namespace lutbake::kernel

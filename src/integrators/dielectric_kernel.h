@@ -36,7 +36,10 @@ struct DielectricConstants {
 // F and 1 - F as DielectricFresnel writes them, mu_t = ((c - W) h.z - mu_o)
 // / eta with c - W = (1 - eta^2) / (c + W), G2 / G1 and Lambda as smith.h and
 // ggx.h write them (the two divisions by the Fresnel denominators' squares
-// shared by r and t). Agrees with DielectricFacetWeight to a few ulps.
+// shared by r and t; -mu_t and both G2 / G1 kept as numerator over
+// denominator, so that one division gives the weight, and in
+// DielectricTerms the whole term). Agrees with DielectricFacetWeight to a
+// few ulps.
 void DielectricWeights(const DielectricConstants &constants, const double *c, const double *hz,
                        const double *muR, size_t n, double *w);
 
@@ -66,10 +69,12 @@ struct ArcConstants {
 //   terms[k] = (ruleW[k] q) G2(mu_o, mu_i),
 // each cosine clamped to at most 1, 0 unless both are positive. G2 is
 // smith.h's for GGX, with L = mu Lambda(mu) = s / d, s = alpha^2 (1 - mu^2),
-// d = 2 (sqrt(mu^2 + s) + mu) (ggx.h), multiplied through by d_o d_i (one
-// division, not three):
+// d = 2 (sqrt(mu^2 + s) + mu) (ggx.h), multiplied through by d_o d_i:
 //   correlated: mu_o mu_i d_o d_i / (mu_o mu_i d_o d_i + mu_i s_o d_i + mu_o s_i d_o),
-//   separable:  (mu_o d_o)(mu_i d_i) / ((mu_o d_o + s_o)(mu_i d_i + s_i)).
+//   separable:  (mu_o d_o)(mu_i d_i) / ((mu_o d_o + s_o)(mu_i d_i + s_i)),
+// with every cosine and length scaled by 1 + v^2 (G2 is homogeneous of
+// degree 0 in them; cos(psi) = (1 - v^2) / (1 + v^2)), so that one division
+// takes q as well: one division a node, not four.
 // The same bits on every instruction set as ArcTermScalar.
 void ArcTerms(const ArcConstants &constants, const double *v, const double *ruleW, size_t n,
               double *terms);

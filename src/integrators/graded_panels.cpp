@@ -15,18 +15,18 @@ void GradeToward(double a, double b, double delta, bool towardA, std::vector<Pan
     double cur = b;
     while (cur - a > delta) {
       const double mid = a + keep * (cur - a);
-      out->push_back({mid, cur});
+      AppendPanel(out, mid, cur);
       cur = mid;
     }
-    out->push_back({a, cur});
+    AppendPanel(out, a, cur);
   } else {
     double cur = a;
     while (b - cur > delta) {
       const double mid = b - keep * (b - cur);
-      out->push_back({cur, mid});
+      AppendPanel(out, cur, mid);
       cur = mid;
     }
-    out->push_back({cur, b});
+    AppendPanel(out, cur, b);
   }
 }
 
@@ -58,10 +58,10 @@ void BuildPanels(const std::vector<Point> &points, double maxLength, double near
       GradeToward(p.v, q.v, q.below, false, &graded, q.keep);
     } else if (p.sqAbove && q.sqBelow) {
       // Two square-root ends: one quadratic panel toward each.
-      graded.push_back({p.v, 0.5 * (p.v + q.v)});
-      graded.push_back({0.5 * (p.v + q.v), q.v});
+      AppendPanel(&graded, p.v, 0.5 * (p.v + q.v));
+      AppendPanel(&graded, 0.5 * (p.v + q.v), q.v);
     } else {
-      graded.push_back({p.v, q.v});
+      AppendPanel(&graded, p.v, q.v);
     }
     const size_t start = out->size();
     for (const Panel &g : graded) {
@@ -70,8 +70,8 @@ void BuildPanels(const std::vector<Point> &points, double maxLength, double near
         // next to whatever singularity sits at g.b.
         const int m = std::max(1, static_cast<int>(std::ceil((g.b - g.a) / maxLength - 1e-9)));
         for (int k = 0; k < m; ++k)
-          out->push_back(
-              {g.a + (g.b - g.a) * k / m, k + 1 == m ? g.b : g.a + (g.b - g.a) * (k + 1) / m});
+          AppendPanel(out, g.a + (g.b - g.a) * k / m,
+                      k + 1 == m ? g.b : g.a + (g.b - g.a) * (k + 1) / m);
         continue;
       }
       double cur = g.a;
@@ -79,10 +79,10 @@ void BuildPanels(const std::vector<Point> &points, double maxLength, double near
         const double len = std::min(maxLength, std::max(cur, nearSingular));
         // The last piece is between 1/2 and 3/2 of len, for the same reason.
         if (g.b - cur <= 1.5 * len) break;
-        out->push_back({cur, cur + len});
+        AppendPanel(out, cur, cur + len);
         cur += len;
       }
-      out->push_back({cur, g.b});
+      AppendPanel(out, cur, g.b);
     }
     if (p.sqAbove) (*out)[start].square = 1;
     if (q.sqBelow) out->back().square = -1;

@@ -33,6 +33,28 @@ struct Panel {
   double root = 0.0;
 };
 
+// Append a linear panel [a, b], or a point, with its fields written in place:
+// push_back of a braced temporary built it on the stack and copied it with
+// wider loads than its stores (a store-forwarding stall on every panel, 10%
+// of the albedo's time). The same values either way.
+inline void AppendPanel(std::vector<Panel> *out, double a, double b) {
+  Panel &p = out->emplace_back();
+  p.a = a;
+  p.b = b;
+  p.square = 0;
+  p.root = 0.0;
+}
+inline void AppendPoint(std::vector<Point> *out, double v, double below, double above,
+                        bool sqBelow = false, bool sqAbove = false, double keep = 0.5) {
+  Point &p = out->emplace_back();
+  p.v = v;
+  p.below = below;
+  p.above = above;
+  p.sqBelow = sqBelow;
+  p.sqAbove = sqAbove;
+  p.keep = keep;
+}
+
 // Panels from a to b graded geometrically toward a (towardA) or b: each
 // keeps the share `keep` of what is left (ratio 1 / keep), until the one
 // next to that end is at most delta long.
