@@ -417,7 +417,8 @@ void TexelChannels(const PresetTexture &texture, const Needs &needs, const AxisR
     }
     const double stored = channel.scale * value + channel.offset;
     values[c] = std::clamp(stored, channel.clampMin, channel.clampMax);
-    errors[c] = std::fabs(channel.scale) * error + std::abs(stored - values[c]);
+    errors[c] = std::fabs(channel.scale) * error +
+                (channel.clampIsValue ? 0.0 : std::abs(stored - values[c]));
   }
 }
 
