@@ -77,9 +77,9 @@ void AddModelOptions(CLI::App &app, std::string &ndf, std::string &smith) {
 void AddSheenOptions(CLI::App &app, std::string &visibility, std::string &alpha) {
   app.add_option("--sheen-visibility", visibility,
                  "sheen_E, sheen_Eavg: charlie (Estevez-Kulla's fitted Lambda, as glTF's "
-                 "KHR_materials_sheen gives it) or ashikhmin (1 / (4 (mu_i + mu_o - mu_i mu_o)))")
+                 "KHR_materials_sheen), ashikhmin (1/(4 (mu_i + mu_o - mu_i mu_o))) or ospray")
       ->capture_default_str()
-      ->check(OneOf({"charlie", "ashikhmin"}));
+      ->check(OneOf({"charlie", "ashikhmin", "ospray"}));
   app.add_option("--sheen-alpha", alpha,
                  "sheen_E, sheen_Eavg: the Charlie alpha from the roughness axis r "
                  "(sheenRoughness): linear alpha = r, squared alpha = r^2 (Filament's cloth, and "

@@ -384,9 +384,10 @@ class FitWriter : public TableWriter {
                           "its bound per value");
     const std::string name = table.Name();
     const std::string text =
-        language_ == 0 ? FitCppSource(name, params, result.fit, result.certificate, metadata)
-                       : FitShaderSource(static_cast<ShaderLanguage>(language_ - 1), name, params,
-                                         result.fit, result.certificate, metadata);
+        language_ == 0
+            ? FitCppSource(name, params, result.fit, result.certificate, metadata)
+            : FitShaderSource(static_cast<ShaderLanguage>(language_ - 1), name, params, result.fit,
+                              ShaderCertificate(result.certificate), metadata);
     WriteWholeFile(path, text);
   }
 

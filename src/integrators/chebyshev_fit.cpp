@@ -104,7 +104,11 @@ T EvaluateIn(const PiecewiseChebyshev &f, int channel, T x, T y) {
 }
 
 // Clenshaw's float32 rounding for sum c_k T_k (|c_k| <= magnitude[k]), as
-// the header states.
+// the header states. One step b_k = c_k + (z + z) b_{k+1} - b_{k+2} rounds
+// three times (z + z is exact): u/2 |2 z b_{k+1}| + u/2 |c_k + 2 z b_{k+1}|
+// + u/2 |b_k| <= 1.5 u (|c_k| + 2 |b_{k+1}| + |b_{k+2}|) (a fused
+// multiply-add rounds less); 2 u covers it with the computed b's a few u
+// above the exact ones.
 double ClenshawRounding(const std::vector<double> &magnitude) {
   const int n = static_cast<int>(magnitude.size());
   std::vector<double> beta(static_cast<size_t>(n) + 2, 0.0);
@@ -115,13 +119,70 @@ double ClenshawRounding(const std::vector<double> &magnitude) {
   for (int k = 0; k < n; ++k)
     bound += (k + 1) * (magnitude[static_cast<size_t>(k)] + 2.0 * beta[static_cast<size_t>(k) + 1] +
                         beta[static_cast<size_t>(k) + 2]);
-  return 4.0 * kUnit * bound;
+  return 2.0 * kUnit * bound;
 }
 
-// The coordinate map's rounding in s (absolute), per axis.
-double MapRounding(double lo, double hi, bool squareRoot) {
-  double d = 8.0 * kUnit;
+// The Chebyshev coefficients of the derivative of sum_{k < n} c_k T_k:
+// d_{n-1} = d_n = 0, d_{k-1} = d_{k+1} + 2 k c_k, then d_0 / 2.
+std::vector<double> ChebyshevDerivative(const std::vector<double> &c) {
+  const int n = static_cast<int>(c.size());
+  std::vector<double> d(static_cast<size_t>(std::max(n, 1)) + 1, 0.0);
+  for (int k = n - 1; k >= 1; --k)
+    d[static_cast<size_t>(k) - 1] =
+        d[static_cast<size_t>(k) + 1] + 2.0 * k * c[static_cast<size_t>(k)];
+  d[0] *= 0.5;
+  d.resize(static_cast<size_t>(std::max(n - 1, 1)));
+  return d;
+}
+
+// A proved bound of |d^order p / dz^order| along x (alongX) or y over the
+// patch [-1, 1]^2: each line's series (a row j for x, a column i for y)
+// differentiated `order` times, sum_j |T_j| <= 1 over the other axis, so
+// |p_z...| <= sum over lines and k of |d_k|. Never above the cruder
+// sum |c_k| k^2 (order 1) or sum |c_k| k^2 (k^2 - 1) / 3 (order 2). The
+// double arithmetic of the recurrence (exact float32 inputs, n^2 terms of
+// relative rounding 2^-53) is covered by the factor 1 + 1e-9.
+double DerivativeBound(const double *c, int nx, int ny, bool alongX, int order) {
+  const int lines = alongX ? ny : nx, length = alongX ? nx : ny;
+  double bound = 0.0;
+  for (int line = 0; line < lines; ++line) {
+    std::vector<double> series(static_cast<size_t>(length));
+    for (int k = 0; k < length; ++k)
+      series[static_cast<size_t>(k)] = alongX ? c[line * nx + k] : c[k * nx + line];
+    for (int o = 0; o < order; ++o) series = ChebyshevDerivative(series);
+    for (double d : series) bound += std::abs(d);
+  }
+  return bound * (1.0 + 1e-9);
+}
+
+// The precision model's relative rounding of / and sqrt (FitPrecision):
+// IEEE binary32 rounds both correctly (u / 2); a shader's / is within 2.5
+// ulp (5 u) and its sqrt, 1 / inversesqrt, within 4.5 ulp (9 u) (GLSL ES
+// 3.00, WGSL).
+double DivisionRounding(FitPrecision p) {
+  return p == FitPrecision::kIeee ? 0.5 * kUnit : 5.0 * kUnit;
+}
+double SqrtRounding(FitPrecision p) { return p == FitPrecision::kIeee ? 0.5 * kUnit : 9.0 * kUnit; }
+
+// The coordinate map's rounding in s (absolute), per axis. The unit
+// coordinates a, b carry 2 u relative (x rounded to float, the subtraction,
+// the product and the float32 constant), clamped into [0, 1].
+//   linear: 2 u.  sqrt-x: q = sqrt(a) carries e_q = e_sqrt + 2 u / 2 of q <= 1.
+//   corner: s_x = q / (q + b): s_x (1 - s_x) (e_q + 2 u) from q and b,
+//           s_x (u / 2 + e_div) from the sum and the division, taken at the
+//           patch's worst s; s_y = max(q, b) <= max(e_q, 2 u).
+// A square root near a = 0 of an a that is a difference x - xLo with
+// xLo != 0 adds sqrt(4 u |xLo| / (xHi - xLo)).
+double MapRounding(double lo, double hi, bool squareRoot, FitPrecision p) {
+  double d = squareRoot ? std::max(SqrtRounding(p) + kUnit, 2.0 * kUnit) : 2.0 * kUnit;
   if (squareRoot && lo != 0.0) d += std::sqrt(4.0 * kUnit * std::abs(lo) / (hi - lo));
+  return d;
+}
+double CornerRoundingX(double lo, double hi, double sLo, double sHi, FitPrecision p) {
+  const double widest =
+      sLo <= 0.5 && sHi >= 0.5 ? 0.25 : std::max(sLo * (1.0 - sLo), sHi * (1.0 - sHi));
+  double d = widest * (SqrtRounding(p) + 3.0 * kUnit) + sHi * (0.5 * kUnit + DivisionRounding(p));
+  if (lo != 0.0) d += std::sqrt(4.0 * kUnit * std::abs(lo) / (hi - lo));
   return d;
 }
 
@@ -333,23 +394,28 @@ float PiecewiseChebyshev::EvaluateFloat(int channel, double x, double y) const {
   return EvaluateIn<float>(*this, channel, static_cast<float>(x), static_cast<float>(y));
 }
 
-double FitRoundingBound(const PiecewiseChebyshev &f, int channel, int kx, int ky) {
+double FitRoundingBound(const PiecewiseChebyshev &f, int channel, int kx, int ky,
+                        FitPrecision precision) {
   const double *c = f.Patch(channel, kx, ky);
   const bool sqrtX = f.map == FitMap::kSqrtX || f.map == FitMap::kCorner;
-  double dsx = MapRounding(f.xLo, f.xHi, sqrtX);
-  // log: 4 ulp of |log x| (a shader's log is not correctly rounded) and an
-  // absolute 2^-21 (GLSL's log near 1), over the span of the logs.
-  double dsy = MapRounding(f.yLo, f.yHi, false);
+  double dsx = MapRounding(f.xLo, f.xHi, sqrtX, precision);
+  // log: 3 ulp (6 u) of |log x| (GLSL ES 3.00's log outside [0.5, 2]; a
+  // shader's log is not correctly rounded) and an absolute 2^-21 (its log
+  // inside [0.5, 2]), over the span of the logs; the subtraction of the
+  // origin and the product by the scale 2 u of a <= 1.
+  double dsy = MapRounding(f.yLo, f.yHi, f.map == FitMap::kCorner, precision);
+  if (f.map == FitMap::kCorner)
+    dsx = CornerRoundingX(f.xLo, f.xHi, f.breaksX[kx], f.breaksX[kx + 1], precision);
   if (f.map == FitMap::kLogX)
-    dsx = 8.0 * kUnit +
-          (0x1p-21 + 4.0 * kUnit * std::abs(std::log(f.xLo))) / (std::log(f.xHi) - std::log(f.xLo));
+    dsx = 2.0 * kUnit +
+          (0x1p-21 + 6.0 * kUnit * std::abs(std::log(f.xLo))) / (std::log(f.xHi) - std::log(f.xLo));
   if (f.map == FitMap::kLogXY) {
     // As kLogX's, each log's argument rounded first (2 u in the log) and
     // the larger |log| of the two ends.
     const auto logRounding = [](double lo, double hi) {
-      return 8.0 * kUnit +
+      return 2.0 * kUnit +
              (0x1p-21 + 2.0 * kUnit +
-              4.0 * kUnit * std::max(std::abs(std::log(lo)), std::abs(std::log(hi)))) /
+              6.0 * kUnit * std::max(std::abs(std::log(lo)), std::abs(std::log(hi)))) /
                  (std::log(hi) - std::log(lo));
     };
     dsx = logRounding(f.xLo + f.xShift, f.xHi + f.xShift);
@@ -357,9 +423,17 @@ double FitRoundingBound(const PiecewiseChebyshev &f, int channel, int kx, int ky
   }
   const double wx = f.breaksX[kx + 1] - f.breaksX[kx];
   const double wy = f.dims == 2 ? f.breaksY[ky + 1] - f.breaksY[ky] : 1.0;
-  const double dzx = (2.0 * dsx + 8.0 * kUnit) / wx + 2.0 * kUnit;
-  const double dzy = (2.0 * dsy + 8.0 * kUnit) / wy + 2.0 * kUnit;
-  double slopeX = 0.0, slopeY = 0.0, inner = 0.0;
+  // z = (s + s - (lo + hi)) / (hi - lo): lo + hi rounds by u (lo + hi <= 2),
+  // the subtraction by u / 2 of |2 s - lo - hi| <= w (1 + 2 ds + u), hi - lo
+  // by u / 2 relative and the division by e_div of |z| <= 1:
+  // dz <= (2 ds + u) / w + u + e_div, and 2 u + e_div for the second-order
+  // terms.
+  const double dzx = (2.0 * dsx + kUnit) / wx + 2.0 * kUnit + DivisionRounding(precision);
+  const double dzy = (2.0 * dsy + kUnit) / wy + 2.0 * kUnit + DivisionRounding(precision);
+  // The slopes |p_zx|, |p_zy| over the patch, proved (DerivativeBound).
+  const double slopeX = DerivativeBound(c, f.nx, f.ny, true, 1);
+  const double slopeY = f.dims == 2 ? DerivativeBound(c, f.nx, f.ny, false, 1) : 0.0;
+  double inner = 0.0;
   std::vector<double> rowMagnitude(static_cast<size_t>(f.ny), 0.0);
   for (int j = 0; j < f.ny; ++j) {
     std::vector<double> m(static_cast<size_t>(f.nx));
@@ -367,13 +441,26 @@ double FitRoundingBound(const PiecewiseChebyshev &f, int channel, int kx, int ky
       const double a = std::abs(c[j * f.nx + i]);
       m[static_cast<size_t>(i)] = a;
       rowMagnitude[static_cast<size_t>(j)] += a;
-      slopeX += a * i * i;
-      slopeY += a * j * j;
     }
     inner += ClenshawRounding(m);
   }
   const double outer = f.ny > 1 ? ClenshawRounding(rowMagnitude) : 0.0;
   return slopeX * dzx + (f.dims == 2 ? slopeY * dzy : 0.0) + inner + outer;
+}
+
+FitCertificate ShaderCertificate(const FitCertificate &certificate) {
+  FitCertificate shader = certificate;
+  shader.maxError = certificate.shaderMaxError;
+  for (FitChannelBound &c : shader.channels) {
+    c.rounding = c.shaderRounding;
+    c.bound = c.shaderBound;
+  }
+  const size_t at = shader.method.find("(a priori; IEEE");
+  if (at != std::string::npos)
+    shader.method =
+        shader.method.substr(0, at) +
+        "(a priori; a shader's / within 2.5 ulp, sqrt within 4.5 ulp, log within 3 ulp)";
+  return shader;
 }
 
 FitCertificate CertifyFit(const PiecewiseChebyshev &f, const FitExact &exact, double tolerance,
@@ -395,17 +482,22 @@ FitCertificate CertifyFit(const PiecewiseChebyshev &f, const FitExact &exact, do
       double mx = 0.0, my = 0.0;
       for (int c = 0; c < f.channels; ++c) {
         const double *p = f.Patch(c, kx, ky);
-        double sx = 0.0, sy = 0.0;
+        // The grid is sized by the cruder sum |c_ij| i^2 (i^2 - 1) / 3 (as
+        // before the derivative's coefficients bounded p_zz), so that the
+        // tighter bound below shrinks the term between nodes, not the grid.
+        double crudeX = 0.0, crudeY = 0.0;
         for (int j = 0; j < f.ny; ++j)
           for (int i = 0; i < f.nx; ++i) {
             const double a = std::abs(p[j * f.nx + i]);
-            sx += a * i * i * (i * i - 1.0) / 3.0;
-            sy += a * j * j * (j * j - 1.0) / 3.0;
+            crudeX += a * i * i * (i * i - 1.0) / 3.0;
+            crudeY += a * j * j * (j * j - 1.0) / 3.0;
           }
-        secondX[static_cast<size_t>((c * py + ky) * px + kx)] = sx;
-        secondY[static_cast<size_t>((c * py + ky) * px + kx)] = sy;
-        mx = std::max(mx, sx);
-        my = std::max(my, sy);
+        secondX[static_cast<size_t>((c * py + ky) * px + kx)] =
+            std::min(crudeX, DerivativeBound(p, f.nx, f.ny, true, 2));
+        secondY[static_cast<size_t>((c * py + ky) * px + kx)] =
+            f.dims == 2 ? std::min(crudeY, DerivativeBound(p, f.nx, f.ny, false, 2)) : 0.0;
+        mx = std::max(mx, crudeX);
+        my = std::max(my, crudeY);
       }
       const auto size = [&](double m) {
         return static_cast<int>(std::min(
@@ -474,7 +566,8 @@ FitCertificate CertifyFit(const PiecewiseChebyshev &f, const FitExact &exact, do
       const double hx = 2.0 / g.gx, hy = g.gy ? 2.0 / g.gy : 0.0;
       const double between =
           hx * hx / 8.0 * (secondX[slot] + 2.0 * fxx) + hy * hy / 8.0 * (secondY[slot] + 2.0 * fyy);
-      const double rounding = FitRoundingBound(f, c, g.kx, g.ky);
+      const double rounding = FitRoundingBound(f, c, g.kx, g.ky, FitPrecision::kIeee);
+      const double shaderRounding = FitRoundingBound(f, c, g.kx, g.ky, FitPrecision::kShader);
       if (worst > out.gridError) {
         out.gridError = worst;
         out.worstX = worstAt.first;
@@ -482,16 +575,21 @@ FitCertificate CertifyFit(const PiecewiseChebyshev &f, const FitExact &exact, do
       }
       out.betweenNodes = std::max(out.betweenNodes, between);
       out.rounding = std::max(out.rounding, rounding);
+      out.shaderRounding = std::max(out.shaderRounding, shaderRounding);
       out.bound = std::max(out.bound, worst + between + rounding);
+      out.shaderBound = std::max(out.shaderBound, worst + between + shaderRounding);
     }
     out.bound += out.exactError;
+    out.shaderBound += out.exactError;
     cert.maxError = std::max(cert.maxError, out.bound);
+    cert.shaderMaxError = std::max(cert.shaderMaxError, out.shaderBound);
   }
   cert.method =
       "max |fit - exact| on a grid of " + std::to_string(cert.gridPoints) +
       " points (per patch uniform in z, edges included) + h^2/8 (|fit_zz| proved from the "
       "coefficients + 2 x the largest second difference of the exact values, an estimate) per "
-      "axis + the exact values' error bounds + the float32 evaluation's rounding (a priori)";
+      "axis + the exact values' error bounds + the float32 evaluation's rounding (a priori; IEEE "
+      "binary32, correctly rounded / and sqrt, log within 3 ulp)";
   return cert;
 }
 
@@ -534,7 +632,7 @@ FitResult FitPiecewiseChebyshev(const FitRequest &r) {
                 if (map == FitMap::kCorner && (gradeX != 1.0 || px % 2 != 0)) continue;
                 if (map != FitMap::kLinear && gradeX != 1.0) continue;
                 // One patch in y: every grading is the same shape.
-                if (map == FitMap::kLogXY && py == 1 && gradeY != 1.0) continue;
+                if (py == 1 && gradeY != 1.0) continue;
                 if (gradeY == 0.0 && (map != FitMap::kCorner || py < 2 || r.cornerExclusion <= 0.0))
                   continue;
                 if (r.dims == 2 && tight && nx != ny) continue;
@@ -554,8 +652,16 @@ FitResult FitPiecewiseChebyshev(const FitRequest &r) {
     PiecewiseChebyshev f = Build(r, c.shape);
     FitCoefficients(&f, r.exact, &evaluations);
     c.error = CheckError(f, r.exact, &evaluations);
+    // The float32 evaluation's rounding (a priori, as certified) takes its
+    // share too: a tight tolerance is mostly rounding where the table is
+    // steep in s (at 4.9e-4 it is a few percent and decides nothing).
+    double rounding = 0.0;
+    for (int ch = 0; ch < f.channels; ++ch)
+      for (int ky = 0; ky < f.PatchesY(); ++ky)
+        for (int kx = 0; kx < f.PatchesX(); ++kx)
+          rounding = std::max(rounding, FitRoundingBound(f, ch, kx, ky, FitPrecision::kIeee));
     if (c.error < closest.error) closest = c;
-    if (c.error <= 0.45 * r.tolerance) {
+    if (c.error <= 0.45 * r.tolerance && c.error + rounding <= 0.75 * r.tolerance) {
       c.reached = true;
       candidates.push_back(c);
       if (++reachedCount >= 3) break;

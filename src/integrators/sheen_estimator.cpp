@@ -21,16 +21,16 @@ SheenAlbedoEstimator::SheenAlbedoEstimator(SheenVisibility visibility, double al
     throw std::invalid_argument("sheen estimator: alpha must lie in (0, 1]");
   if (!(mu_o >= 0.0 && mu_o <= 1.0))
     throw std::invalid_argument("sheen estimator: mu_o must lie in [0, 1]");
-  if (visibility == SheenVisibility::kCharlie && mu_o == 0.0)
+  if (UsesCharlieLambda(visibility) && mu_o == 0.0)
     throw std::domain_error(
         "sheen estimator: E is infinite at mu_o = 0 with the Charlie visibility");
   s_o_ = SafeSqrt((1.0 - mu_o) * (1.0 + mu_o));
-  if (visibility == SheenVisibility::kCharlie) onePlusLambda_o_ = 1.0 + CharlieLambda(mu_o, alpha);
+  if (UsesCharlieLambda(visibility)) onePlusLambda_o_ = 1.0 + CharlieLambda(mu_o, alpha);
 }
 
 double SheenAlbedoEstimator::FourW(double mu_i) const {
-  if (visibility_ == SheenVisibility::kCharlie)
-    return 1.0 / (mu_o_ * (onePlusLambda_o_ + CharlieLambda(mu_i, alpha_)));
+  if (UsesCharlieLambda(visibility_))
+    return 1.0 / (mu_o_ * (onePlusLambda_o_ + SheenLightLambda(visibility_, mu_i, alpha_)));
   const double denom = mu_i + mu_o_ * (1.0 - mu_i);
   return denom > 0.0 ? mu_i / denom : 0.0;
 }

@@ -118,7 +118,7 @@ void CheckArguments(double alpha, double mu_o, double tolerance) {
 // Throws where E is infinite (see the header).
 void CheckFinite(SheenVisibility visibility, double alpha, double mu_o) {
   if (mu_o > 0.0) return;
-  if (visibility == SheenVisibility::kCharlie)
+  if (UsesCharlieLambda(visibility))
     throw std::domain_error(
         "sheen albedo: E is infinite at mu_o = 0 with the Charlie visibility (its 1 / (4 mu_o "
         "mu_i) keeps a factor 1 / mu_o that Lambda(mu_o), finite at 0, does not cancel)");
@@ -153,8 +153,8 @@ struct Problem {
   double negligible = 0.0;  // in units of J
 
   double What(double mu_i) const {
-    if (visibility == SheenVisibility::kCharlie)
-      return onePlusLambda_o / (onePlusLambda_o + CharlieLambda(mu_i, alpha));
+    if (UsesCharlieLambda(visibility))
+      return onePlusLambda_o / (onePlusLambda_o + SheenLightLambda(visibility, mu_i, alpha));
     const double denom = mu_i + mu_o * (1.0 - mu_i);
     return denom > 0.0 ? mu_i / denom : 1.0;  // mu_o = mu_i = 0: the limit 1 along mu_i > 0
   }
@@ -182,7 +182,7 @@ Problem MakeProblem(SheenVisibility visibility, double alpha, double mu_o) {
   t.evenPower = t.p == std::floor(t.p) && t.p < 1e15;
   t.c = CharlieLambdaExponent(alpha);
   const double logTwoK = std::log(2.0 * CharlieNormalization(alpha));
-  if (visibility == SheenVisibility::kCharlie) {
+  if (UsesCharlieLambda(visibility)) {
     t.onePlusLambda_o = 1.0 + CharlieLambda(mu_o, alpha);
     t.logS = logTwoK - std::log(4.0 * mu_o) - std::log(t.onePlusLambda_o);
   } else {
@@ -295,7 +295,7 @@ struct Layout {
 Layout MuLayout(const Problem &t) {
   Layout layout;
   const double alpha = t.alpha, mu_o = t.mu_o, end = t.muEnd;
-  const bool charlie = t.visibility == SheenVisibility::kCharlie;
+  const bool charlie = UsesCharlieLambda(t.visibility);
   const double lobe = 2.0 * std::sqrt(alpha);
   const double maxLength = std::min(kMaxMuPanel, lobe);
   // The first panel at mu_i = 0.
@@ -658,7 +658,7 @@ double AverageTail(double alpha, double mu) {
 std::vector<MuPanel> AverageLayout(SheenVisibility visibility, double alpha, double end,
                                    double negligible, double *neglected) {
   std::vector<MuPanel> panels;
-  const bool charlie = visibility == SheenVisibility::kCharlie;
+  const bool charlie = UsesCharlieLambda(visibility);
   const double c = CharlieLambdaExponent(alpha);
   const double lobe = 2.0 * std::sqrt(alpha);
   const double maxLength = std::min(kMaxMuPanel, lobe);

@@ -8,12 +8,14 @@ std::string_view ToString(SheenVisibility visibility) {
   switch (visibility) {
     case SheenVisibility::kCharlie: return "charlie";
     case SheenVisibility::kAshikhmin: return "ashikhmin";
+    case SheenVisibility::kOspray: return "ospray";
   }
   return "?";
 }
 
 bool ParseSheenVisibility(std::string_view text, SheenVisibility *visibility) {
-  for (SheenVisibility v : {SheenVisibility::kCharlie, SheenVisibility::kAshikhmin})
+  for (SheenVisibility v :
+       {SheenVisibility::kCharlie, SheenVisibility::kAshikhmin, SheenVisibility::kOspray})
     if (text == ToString(v)) {
       *visibility = v;
       return true;
@@ -78,9 +80,23 @@ double CharlieLambda(double mu, double alpha) {
 
 double CharlieLambdaExponent(double alpha) { return LambdaFit(alpha).c; }
 
+bool UsesCharlieLambda(SheenVisibility visibility) {
+  return visibility == SheenVisibility::kCharlie || visibility == SheenVisibility::kOspray;
+}
+
+double SheenLightLambda(SheenVisibility visibility, double mu_i, double alpha) {
+  if (visibility != SheenVisibility::kOspray) return CharlieLambda(mu_i, alpha);
+  const LambdaFit fit(alpha);
+  const double x = Clamp(mu_i, 0.0, 1.0);
+  const double l = x < 0.5 ? fit.L(x) : 2.0 * fit.L(0.5) - fit.L(1.0 - x);
+  const double t = Sqr(Sqr(Sqr(1.0 - x)));  // (1 - mu_i)^8
+  return std::exp((1.0 + 2.0 * t) * l);
+}
+
 double SheenCosineVisibility(SheenVisibility visibility, double alpha, double mu_o, double mu_i) {
-  if (visibility == SheenVisibility::kCharlie)
-    return 1.0 / (4.0 * mu_o * (1.0 + CharlieLambda(mu_o, alpha) + CharlieLambda(mu_i, alpha)));
+  if (UsesCharlieLambda(visibility))
+    return 1.0 / (4.0 * mu_o *
+                  (1.0 + CharlieLambda(mu_o, alpha) + SheenLightLambda(visibility, mu_i, alpha)));
   const double denom = mu_i + mu_o * (1.0 - mu_i);
   return denom > 0.0 ? mu_i / (4.0 * denom) : 0.0;
 }

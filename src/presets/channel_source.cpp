@@ -462,7 +462,10 @@ void PresetChannelPlan::Channels(const PresetTexel &texel, const LtcMatrix *fit,
     }
     const double stored = channel.scale * value + channel.offset;
     values[c] = std::clamp(stored, channel.clampMin, channel.clampMax);
-    errors[c] = std::fabs(channel.scale) * error + std::abs(stored - values[c]);
+    // clampIsValue: the engine's own table is the clamped integral, so the
+    // clamp moves nothing away from it (preset.h).
+    errors[c] = std::fabs(channel.scale) * error +
+                (channel.clampIsValue ? 0.0 : std::abs(stored - values[c]));
   }
 }
 

@@ -22,9 +22,16 @@
 // normals per texel, min(mean, 1); its averages a 1025-point trapezoid over
 // the linearly interpolated dir table, min(., 1). These are integrated to
 // 1e-8 (the averages over mu exactly, not over the interpolated table).
-// Not here: MicrofacetSheenAlbedoTable_dir (16^2), whose Charlie visibility
-// softens the light's Lambda (SheenDistribution.ih evalLambdaI, an artistic
-// terminator term) in a way lutbake's sheen models do not.
+//
+//   MicrofacetSheenAlbedoTable_dir[16 * 16]  x = cosThetaO, y = roughness:
+//       the Charlie sheen's E (MicrofacetSheenAlbedo_integrate: 1024
+//       stratified uniform-hemisphere samples, min(mean, 1)) at the sheen's
+//       r = roughnessToAlpha(roughness) = max(roughness^2, 0.001), with
+//       OSPRay's visibility (SheenDistribution.ih evalG2: the light's Lambda
+//       raised to 1 + 2 (1 - cosThetaI)^8, "a softer light terminator";
+//       lutbake's SheenVisibility::kOspray), stored as min(E, 1) as OSPRay
+//       clamps it (E exceeds 1 at grazing view: at cosThetaO = 1e-6 it is
+//       6.5 at roughness 0 and 1.5 at 1, but 0.9955 at roughness 7/15).
 #include <string>
 
 #include "presets.h"
@@ -37,6 +44,12 @@ constexpr const char *kSource =
     "RenderKit/ospray modules/cpu/render/bsdfs/MicrofacetAlbedoTables.ispc, "
     "MicrofacetAlbedoTables.ih, MicrofacetAlbedo.ih, GGXDistribution.ih, "
     "MicrofacetDistribution.ih (roughnessToAlpha)";
+constexpr const char *kSheenSource =
+    "RenderKit/ospray modules/cpu/render/bsdfs/MicrofacetAlbedoTables.ispc "
+    "(MicrofacetSheenAlbedoTable_precompute), MicrofacetAlbedoTables.ih "
+    "(MicrofacetSheenAlbedoTable_eval), MicrofacetAlbedo.ih (MicrofacetSheenAlbedo_integrate), "
+    "SheenDistribution.ih (eval, evalLambda, evalLambdaI, evalG2), MicrofacetDistribution.ih "
+    "(roughnessToAlpha)";
 
 PresetAxis CosineAxis(int count) {
   PresetAxis axis = EdgesAxis("mu", count);
@@ -77,8 +90,8 @@ const Preset &OsprayPreset() {
     p.engine = "OSPRay";
     p.summary =
         "MicrofacetAlbedoTable_dir/_avg (GGX E 32 x 32, E_avg 32) and the dielectric tables "
-        "(16^3 and 16^2, eta in [1/3, 1] and [1, 3], reflection alone): ISPC arrays at texel "
-        "edges, as MicrofacetAlbedoTables.ispc lays them out";
+        "(16^3 and 16^2, eta in [1/3, 1] and [1, 3], reflection alone), the sheen albedo 16^2: "
+        "ISPC arrays at texel edges, as MicrofacetAlbedoTables.ispc lays them out";
     const double third = static_cast<double>(1.0f / 3.0f);
     const PresetAxis rough32 = EdgesAxis("roughness", 32), rough16 = EdgesAxis("roughness", 16);
     p.textures.push_back(OsprayTable("MicrofacetAlbedoTable_dir", {CosineAxis(32), rough32}, "E",
@@ -107,6 +120,25 @@ const Preset &OsprayPreset() {
                                        {EtaAxis(d.low, d.high), rough16},
                                        (meaning + "_Eavg").c_str(), eval + "Avg(eta, roughness)"));
     }
+    // The sheen albedo, clamped to 1 as OSPRay's generator clamps it.
+    PresetChannel sheen{"sheen_E"};
+    sheen.clampMax = 1.0;
+    sheen.clampIsValue = true;
+    PresetTexture sheenTable =
+        OsprayTable("MicrofacetSheenAlbedoTable_dir", {CosineAxis(16), rough16}, "sheen_E",
+                    "MicrofacetSheenAlbedoTable_eval(cosThetaO, roughness)");
+    sheenTable.channels = {sheen};
+    sheenTable.model.sheenVisibility = SheenVisibility::kOspray;
+    sheenTable.model.sheenAlpha = AlphaMapping::kSquared;
+    sheenTable.model.sheenAlphaMin = 0.001;
+    sheenTable.source = kSheenSource;
+    sheenTable.notes =
+        "OSPRay's Charlie visibility softens the light's Lambda (Lambda_i^(1 + 2 (1 - "
+        "cosThetaI)^8), SheenDistribution.ih evalLambdaI): lutbake's --sheen-visibility ospray. "
+        "E above 1 (grazing view: most texels at cosThetaO = 0, evaluated at 1e-6) is stored as 1, "
+        "as OSPRay's generator clamps it (min(E, 1) is the table's value, so the bound is the "
+        "integral's own).";
+    p.textures.push_back(sheenTable);
     for (PresetTexture &t : p.textures)
       if (t.file.find("RcpEta") != std::string::npos)
         t.notes =

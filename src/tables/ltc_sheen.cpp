@@ -63,7 +63,7 @@ class LtcSheen final : public LtcTableDefinition<SheenTable> {
     PointCoordinate mu;
     mu.option = "mu";
     mu.accepted = "comma-separated numbers in [0, 1]";
-    if (s.sheenVisibility == SheenVisibility::kCharlie) {
+    if (UsesCharlieLambda(s.sheenVisibility)) {
       mu.min = std::numeric_limits<double>::denorm_min();
       mu.accepted =
           "comma-separated numbers in (0, 1]: with the Charlie visibility the lobe's albedo is "
@@ -121,7 +121,7 @@ class LtcSheen final : public LtcTableDefinition<SheenTable> {
   }
   void CheckPoint(const BakeSettings &s, double mu, double r) const override {
     AlphaOf(s, r);  // throws outside [0, 1]
-    const bool charlie = s.sheenVisibility == SheenVisibility::kCharlie;
+    const bool charlie = UsesCharlieLambda(s.sheenVisibility);
     if (!(mu >= 0.0 && mu <= 1.0) || (charlie && mu == 0.0))
       throw std::domain_error("mu " + FormatDouble(mu) + " is outside " +
                               (charlie ? "(0, 1] (the Charlie visibility's albedo is infinite "

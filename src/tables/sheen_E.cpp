@@ -122,7 +122,7 @@ class SheenAlbedo final : public SheenTable {
     PointCoordinate mu;
     mu.option = "mu";
     mu.accepted = "comma-separated numbers in [0, 1]";
-    if (s.sheenVisibility == SheenVisibility::kCharlie) {
+    if (UsesCharlieLambda(s.sheenVisibility)) {
       mu.min = std::numeric_limits<double>::denorm_min();
       mu.accepted =
           "comma-separated numbers in (0, 1]: with the Charlie visibility E is infinite at mu = "

@@ -151,7 +151,8 @@ double BruteForce(SheenVisibility v, double alpha, double mu_o, int n, int m) {
 }
 
 TEST(SheenQuadrature, BruteForceProductRuleAgrees) {
-  for (SheenVisibility v : {SheenVisibility::kCharlie, SheenVisibility::kAshikhmin})
+  for (SheenVisibility v :
+       {SheenVisibility::kCharlie, SheenVisibility::kAshikhmin, SheenVisibility::kOspray})
     for (double mu : {0.5, 0.8}) {
       const double mN = BruteForce(v, 0.5, mu, 1500, 48), m2N = BruteForce(v, 0.5, mu, 3000, 48);
       const double richardson = (4.0 * m2N - mN) / 3.0, estimate = std::abs(m2N - mN);
@@ -162,6 +163,26 @@ TEST(SheenQuadrature, BruteForceProductRuleAgrees) {
           "%.2g)\n",
           ToString(v).data(), mu, r.value, richardson, estimate);
     }
+}
+
+// OSPRay's visibility (Charlie's with the light's Lambda softened): the
+// panel rule and the adaptive one (half-vector variables, another rule)
+// agree within their bounds over OSPRay's texels and the fit's extremes,
+// and the softening changes E by more than either bound.
+TEST(SheenQuadrature, OsprayVisibilityTwoRulesAgree) {
+  int changed = 0;
+  for (double alpha : {0.001, 0.01, 0.0711, 0.3, 0.64, 1.0})
+    for (double mu : {1e-6, 1e-3, 1.0 / 15.0, 0.2, 0.5, 0.8, 1.0}) {
+      const SheenIntegral panel = IntegrateSheenAlbedo(SheenVisibility::kOspray, alpha, mu, 1e-9);
+      const SheenIntegral adaptive =
+          IntegrateSheenAlbedoAdaptive(SheenVisibility::kOspray, alpha, mu, 1e-10);
+      EXPECT_NEAR(panel.value, adaptive.value, panel.bound + adaptive.bound)
+          << "alpha " << alpha << " mu " << mu;
+      EXPECT_LE(panel.bound, 1e-9 * std::max(1.0, panel.value));
+      const double charlie = IntegrateSheenAlbedo(SheenVisibility::kCharlie, alpha, mu, 1e-9).value;
+      if (std::abs(charlie - panel.value) > 1e3 * (panel.bound + 1e-12)) ++changed;
+    }
+  EXPECT_GT(changed, 20);
 }
 
 // Closed forms (ashikhmin). At mu_o = 1, theta_h = theta_i / 2 and W = mu_i / 4,

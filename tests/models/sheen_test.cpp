@@ -16,7 +16,8 @@ namespace lutbake {
 namespace {
 
 TEST(SheenModel, VisibilityNamesRoundTrip) {
-  for (SheenVisibility v : {SheenVisibility::kCharlie, SheenVisibility::kAshikhmin}) {
+  for (SheenVisibility v :
+       {SheenVisibility::kCharlie, SheenVisibility::kAshikhmin, SheenVisibility::kOspray}) {
     SheenVisibility parsed =
         v == SheenVisibility::kCharlie ? SheenVisibility::kAshikhmin : SheenVisibility::kCharlie;
     ASSERT_TRUE(ParseSheenVisibility(ToString(v), &parsed));
@@ -24,6 +25,7 @@ TEST(SheenModel, VisibilityNamesRoundTrip) {
   }
   EXPECT_EQ(ToString(SheenVisibility::kCharlie), "charlie");
   EXPECT_EQ(ToString(SheenVisibility::kAshikhmin), "ashikhmin");
+  EXPECT_EQ(ToString(SheenVisibility::kOspray), "ospray");
   SheenVisibility untouched = SheenVisibility::kAshikhmin;
   EXPECT_FALSE(ParseSheenVisibility("Charlie", &untouched));
   EXPECT_FALSE(ParseSheenVisibility("", &untouched));
@@ -103,6 +105,44 @@ TEST(SheenModel, LambdaIsC1AtOneHalfAndDecreasing) {
     for (int k = 1; k <= 1000; ++k) {
       const double value = CharlieLambda(k / 1000.0, alpha);
       EXPECT_LT(value, previous);
+      previous = value;
+    }
+  }
+}
+
+// OSPRay's light Lambda (SheenDistribution.ih evalLambdaI): Lambda^(1 + 2
+// (1 - mu)^8), here against std::pow of CharlieLambda; the plain Lambda
+// at mu = 1 (exponent 1), its cube at mu = 0; decreasing in mu (what the
+// quadrature's mass bounds take of W), and W = 1 / (4 mu_o (1 + Lambda_o +
+// Lambda_i)) below Charlie's W where Lambda > 1, above it where Lambda < 1.
+TEST(SheenModel, OsprayLightLambdaSoftensCharlies) {
+  const SheenVisibility ospray = SheenVisibility::kOspray;
+  EXPECT_TRUE(UsesCharlieLambda(ospray));
+  EXPECT_TRUE(UsesCharlieLambda(SheenVisibility::kCharlie));
+  EXPECT_FALSE(UsesCharlieLambda(SheenVisibility::kAshikhmin));
+  for (double alpha : {1.0, 0.5, 0.1, 1e-3}) {
+    for (double mu : {0.0, 0.01, 0.2, 0.5, 0.7, 0.9, 1.0}) {
+      const double plain = CharlieLambda(mu, alpha);
+      const double soft = std::pow(plain, 1.0 + 2.0 * std::pow(1.0 - mu, 8.0));
+      EXPECT_NEAR(SheenLightLambda(ospray, mu, alpha), soft, 1e-12 * soft) << mu << " " << alpha;
+      EXPECT_EQ(SheenLightLambda(SheenVisibility::kCharlie, mu, alpha), plain);
+      const double w = SheenCosineVisibility(ospray, alpha, 0.5, mu);
+      const double expected = 1.0 / (2.0 * (1.0 + CharlieLambda(0.5, alpha) + soft));
+      EXPECT_NEAR(w, expected, 1e-12 * expected);
+      const double charlie = SheenCosineVisibility(SheenVisibility::kCharlie, alpha, 0.5, mu);
+      if (plain > 1.0 && mu < 1.0) {
+        EXPECT_LT(w, charlie);
+      }
+      if (plain < 1.0 && mu < 1.0) {
+        EXPECT_GT(w, charlie);
+      }
+    }
+    EXPECT_NEAR(SheenLightLambda(ospray, 0.0, alpha), std::pow(CharlieLambda(0.0, alpha), 3.0),
+                1e-12 * std::pow(CharlieLambda(0.0, alpha), 3.0));
+    double previous = SheenLightLambda(ospray, 0.0, alpha);
+    for (int k = 1; k <= 2000; ++k) {
+      const double value = SheenLightLambda(ospray, k / 2000.0, alpha);
+      ASSERT_LT(value, previous) << k << " " << alpha;
       previous = value;
     }
   }

@@ -35,10 +35,11 @@ engines (default: unreal godot hdrp_ggx hdrp_charlie gltf_ggx gltf_charlie):
       Common.hlsl (helpers).
   gltf_ggx       -> gltf_lut_ggx.csv
   gltf_charlie   -> gltf_lut_charlie.csv
-  ospray_ggx, ospray_glass, ospray_reflection -> ospray_ggx.csv, ospray_dielectric.csv,
-                    ospray_dielectric_reflection.csv (not in the default set)
+  ospray_ggx, ospray_glass, ospray_reflection, ospray_sheen -> ospray_ggx.csv, ospray_dielectric.csv,
+                    ospray_dielectric_reflection.csv, ospray_sheen.csv (not in the default set)
       OSPRay MicrofacetAlbedoTables.ispc: GGX E 32 x 32 and its averages, the dielectric (eta in
-      [1/3, 1]) and its reflection alone 16^3, 1024 stratified samples, float
+      [1/3, 1]) and its reflection alone 16^3, the sheen albedo 16^2 (OSPRay's softened light
+      Lambda), 1024 stratified samples, float
   materialx      -> materialx_albedo_table.csv (not in the default set)
       MaterialX mx_generate_dir_albedo_table: 128 x 128, 64 spherical Fibonacci samples, float
   gltf           -> both glTF tables
@@ -781,6 +782,66 @@ def ospray_dielectric_table(kind):
     return header, ["i", "j", "k", "E", "Eavg"], rows, []
 
 
+def ospray_sheen_lambda(r, cos_theta, soften=False):
+    """SheenDistribution.ih evalLambda (evalLambdaI with soften), float32: the glTF fit of
+    Charlie's Lambda; the light's raised to 1 + 2 (1 - cos)^8."""
+    w0 = np.square(f32(1.0) - r)
+    w1 = f32(1.0) - w0
+    a, b = w0 * f32(25.3245) + w1 * f32(21.5473), w0 * f32(3.32435) + w1 * f32(3.82987)
+    c, d = w0 * f32(0.16801) + w1 * f32(0.19823), w0 * f32(-1.27393) + w1 * f32(-1.97760)
+    e = w0 * f32(-4.85967) + w1 * f32(-4.32054)
+
+    def big_l(x):
+        return a / (f32(1.0) + b * np.power(f32(x), c)) + d * x + e
+    cos_theta = f32(cos_theta)
+    lam = np.where(cos_theta < f32(0.5), np.exp(big_l(cos_theta)),
+                   np.exp(f32(2.0) * big_l(f32(0.5)) - big_l(f32(1.0) - cos_theta))).astype(np.float32)
+    if soften:
+        lam = np.power(lam, f32(1.0) + f32(2.0) * np.square(np.square(np.square(f32(1.0) - cos_theta))))
+    return lam.astype(np.float32)
+
+
+def ospray_sheen_albedo(cos_o, roughness):
+    """MicrofacetSheenAlbedo_integrate: 32 x 32 stratified uniform-hemisphere light samples,
+    D G / (4 cosThetaO pdf), r = roughnessToAlpha(roughness), min(mean, 1); float32."""
+    n = 32
+    r = np.maximum(np.square(f32(roughness)), f32(0.001))
+    u = np.minimum((np.arange(n, dtype=np.float32) + f32(0.5)) / f32(n), f32(1.0 - 1e-6))
+    sx, sy = np.meshgrid(u, u, indexing="ij")                # s = ((i + 0.5) / n, (j + 0.5) / n)
+    sx, sy = sx.ravel()[None, :], sy.ravel()[None, :]
+    cos_o = np.maximum(np.asarray(cos_o, np.float32), f32(1e-6))[:, None]
+    wo = (np.sqrt(np.maximum(f32(0.0), f32(1.0) - cos_o * cos_o)), np.zeros_like(cos_o), cos_o)
+    phi = f32(2.0 * math.pi) * sx                            # uniformSampleHemisphere
+    sin_i = np.sqrt(np.maximum(f32(0.0), f32(1.0) - sy * sy))
+    wi = (np.cos(phi) * sin_i, np.sin(phi) * sin_i, sy)
+    wh = normalize3(wo[0] + wi[0], wo[1] + wi[1], wo[2] + wi[2])
+    cos_h = wh[2]
+    c_oh = wo[0] * wh[0] + wo[1] * wh[1] + wo[2] * wh[2]
+    c_ih = wi[0] * wh[0] + wi[1] * wh[1] + wi[2] * wh[2]
+    inv_r = f32(1.0) / r
+    sin_h = np.sqrt(np.maximum(f32(0.0), f32(1.0) - cos_h * cos_h))
+    dist = (f32(2.0) + inv_r) * np.power(sin_h, inv_r) * f32(1.0 / (2.0 * math.pi))
+    ok = (cos_o * c_oh > 0) & (wi[2] * c_ih > 0)
+    g = np.where(ok, f32(1.0) / (f32(1.0) + ospray_sheen_lambda(r, cos_o)
+                                 + ospray_sheen_lambda(r, wi[2], soften=True)), f32(0.0))
+    pdf = f32(1.0 / (2.0 * math.pi))
+    sample = dist * g * (f32(1.0) / (f32(4.0) * cos_o * pdf))
+    return np.minimum(sample.astype(np.float32).sum(axis=1, dtype=np.float32) / f32(1024), f32(1.0))
+
+
+def ospray_sheen_table():
+    cos_o = np.arange(16, dtype=np.float32) / f32(15)
+    header = [OSPRAY_SRC + "; MicrofacetAlbedo.ih MicrofacetSheenAlbedo_integrate, SheenDistribution.ih "
+              "(eval, evalLambda, evalLambdaI, evalG2), math/sampling.ih uniformSampleHemisphere",
+              "MicrofacetSheenAlbedoTable_dir[j * 16 + i]: i = cosThetaO = i / 15, j = roughness = j / 15"]
+    rows = []
+    for j in range(16):
+        e = ospray_sheen_albedo(cos_o, np.float32(j) / f32(15))
+        for i in range(16):
+            rows.append([i, j, "%.9g" % e[i]])
+    return header, ["i", "j", "E"], rows, []
+
+
 # ---------------------------------------------------------------------------------------------
 # MaterialX: mx_generate_dir_albedo_table (GPU, float), 64 spherical Fibonacci samples per
 # texel: GGX A, B by visible-normal sampling (a spherical cap, Dupuy and Benyoub 2023), weights
@@ -858,6 +919,7 @@ ENGINES = {
     "materialx": ("materialx_albedo_table.csv", materialx_table),
     "ospray_glass": ("ospray_dielectric.csv", lambda: ospray_dielectric_table("glass")),
     "ospray_reflection": ("ospray_dielectric_reflection.csv", lambda: ospray_dielectric_table("reflection")),
+    "ospray_sheen": ("ospray_sheen.csv", ospray_sheen_table),
 }
 DEFAULT = ["unreal", "godot", "hdrp_ggx", "hdrp_charlie", "gltf_ggx", "gltf_charlie"]
 

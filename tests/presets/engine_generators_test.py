@@ -19,9 +19,9 @@ What each comparison shows:
   sqrt(NdotV) = 0 is left out (HDRP integrates it at NdotV = FLT_EPS, the
   preset at 0).
 - OSPRay (1024 stratified samples, float32 arrays): GGX E and E_avg, the
-  dielectric and its reflection alone at eta in [1/3, 1], to the
-  stratification's error; transposed or with the eta axis reversed, 20 times
-  worse or more.
+  dielectric and its reflection alone at eta in [1/3, 1], and the sheen
+  albedo (its softened light Lambda), to the stratification's error;
+  transposed or with the eta axis reversed, 20 times worse or more.
 - MaterialX (64 samples, float): A, B and the sheen albedo (where it is at
   most 1) to the generator's sampling error; transposed, 5 times worse or
   more.
@@ -136,7 +136,8 @@ def main():
         subprocess.run([lutbake, "bake", "--preset", "ospray", "--files",
                         "MicrofacetAlbedoTable_dir.ih,MicrofacetAlbedoTable_avg.ih,"
                         "MicrofacetDielectricAlbedoTable_dir.ih,"
-                        "MicrofacetDielectricReflectionAlbedoTable_dir.ih", "--out", directory],
+                        "MicrofacetDielectricReflectionAlbedoTable_dir.ih,"
+                        "MicrofacetSheenAlbedoTable_dir.ih", "--out", directory],
                        check=True, capture_output=True)
 
         def array(name):
@@ -166,6 +167,22 @@ def main():
                                 for x in texels])
             expect(same < 2e-3, f"OSPRay {name}: RMS {same:.3g}")
             expect(reversed_eta > 20 * same, f"OSPRay {name}, eta reversed: RMS {reversed_eta:.3g}")
+
+        # OSPRay's sheen albedo (16 x 16, uniform hemisphere samples, its
+        # softened light Lambda), both clamped to 1. At cosThetaO = 0 (its
+        # 1e-6) the generator's sum reaches 1 everywhere, where E is 0.9955
+        # and 0.9990 at roughness 7/15 and 6/15 and above 1 at the others.
+        texels = generated(engine_generators.ospray_sheen_table)
+        ours = array("MicrofacetSheenAlbedoTable_dir").reshape(16, 16)
+        edge = max(abs(float(x["E"]) - ours[int(x["j"]), 0]) for x in texels if int(x["i"]) == 0)
+        inner = [x for x in texels if int(x["i"]) > 0]
+        same = rms([float(x["E"]) - ours[int(x["j"]), int(x["i"])] for x in inner])
+        worst = max(abs(float(x["E"]) - ours[int(x["j"]), int(x["i"])]) for x in inner)
+        transposed = rms([float(x["E"]) - ours[int(x["i"]), int(x["j"])] for x in inner])
+        expect(edge < 5e-3, f"OSPRay sheen at cosThetaO = 0: max difference {edge:.3g}")
+        expect(same < 1.5e-4 and worst < 1e-3,
+               f"OSPRay sheen E, cosThetaO > 0: RMS {same:.3g}, max {worst:.3g} (its sampling)")
+        expect(transposed > 100 * same, f"OSPRay sheen E transposed: RMS {transposed:.3g}")
 
         # MaterialX: albedoTable.exr, R = A, G = B, B = the Imageworks sheen
         # albedo, x = NdotV, y = alpha; 64 samples per texel.

@@ -16,6 +16,7 @@
 #include "lutbake/integrators/dielectric_quadrature.h"
 #include "lutbake/integrators/furnace.h"
 #include "lutbake/integrators/gauss_legendre.h"
+#include "lutbake/integrators/sheen_quadrature.h"
 #include "lutbake/lutbake.h"
 #include "lutbake/models/sheen.h"
 #include "lutbake/tables/storage.h"
@@ -648,10 +649,11 @@ TEST(Presets, ThreejsModuleIsThreejsFile) {
 // of the directory. Its generator, re-run, is in engine_generators_test.py.
 TEST(Presets, OsprayArraysHoldTheTablesAtOspraysTexels) {
   const auto dir = test::Scratch("preset_ospray");
-  BakePreset("ospray", dir,
-             {"MicrofacetAlbedoTable_dir.ih", "MicrofacetAlbedoTable_avg.ih",
-              "MicrofacetDielectricAlbedoTable_dir.ih",
-              "MicrofacetDielectricReflectionAlbedoTable_dir.ih"});
+  BakePreset(
+      "ospray", dir,
+      {"MicrofacetAlbedoTable_dir.ih", "MicrofacetAlbedoTable_avg.ih",
+       "MicrofacetDielectricAlbedoTable_dir.ih", "MicrofacetDielectricReflectionAlbedoTable_dir.ih",
+       "MicrofacetSheenAlbedoTable_dir.ih"});
   const Table e = ReadSourceTable((dir / "MicrofacetAlbedoTable_dir.ih").string());
   const Table glass = ReadSourceTable((dir / "MicrofacetDielectricAlbedoTable_dir.ih").string());
   const Table spec =
@@ -691,6 +693,29 @@ TEST(Presets, OsprayArraysHoldTheTablesAtOspraysTexels) {
           }
         }
       }
+  // The sheen albedo: sheen r = max(roughness^2, 0.001), OSPRay's softened
+  // light Lambda, min(E, 1); against the adaptive rule (not the panel rule
+  // the bake used). Charlie's plain visibility is far from it: the
+  // visibility is OSPRay's.
+  const Table sheen = ReadSourceTable((dir / "MicrofacetSheenAlbedoTable_dir.ih").string());
+  ASSERT_EQ(sheen.values.size(), 16u * 16u);
+  double charlieFarthest = 0.0;
+  for (int j : {0, 4, 9, 15})
+    for (int i : {0, 1, 7, 15}) {
+      const double alpha = std::max(Sqr(j / 15.0), 0.001);
+      const double mu = std::max(i / 15.0, 1e-6);
+      const SheenIntegral ospray =
+          IntegrateSheenAlbedoAdaptive(SheenVisibility::kOspray, alpha, mu, 1e-10);
+      const double stored = sheen.values[static_cast<size_t>(j) * 16 + i];
+      EXPECT_NEAR(stored, std::min(ospray.value, 1.0), 1e-6) << i << " " << j;
+      if (ospray.value >= 1.0) {
+        EXPECT_EQ(stored, 1.0) << i << " " << j;
+      }
+      const double charlie =
+          IntegrateSheenAlbedoAdaptive(SheenVisibility::kCharlie, alpha, mu, 1e-10).value;
+      charlieFarthest = std::max(charlieFarthest, std::abs(std::min(charlie, 1.0) - stored));
+    }
+  EXPECT_GT(charlieFarthest, 1e-2);
   const PresetCheck checked = CheckPresetDirectory(dir.string());
   EXPECT_TRUE(checked.pass) << checked.json;
 }

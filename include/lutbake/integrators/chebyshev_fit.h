@@ -20,19 +20,29 @@
 // where h = 2 / g is the grid step in z. The middle term is the error of
 // bilinear interpolation of e between grid nodes: no spike of e can hide
 // between nodes unless its second derivative exceeds the bound used. That
-// bound is |p_zz| + |f_zz|: |p_zz| proved from the coefficients
-// (|T_k''| <= k^2 (k^2 - 1) / 3 on [-1, 1], so |p_zz_x| <= sum |c_ij|
-// i^2 (i^2 - 1) / 3), |f_zz| estimated: twice the largest second
+// bound is |p_zz| + |f_zz|: |p_zz| proved from the coefficients (the
+// Chebyshev coefficients d_k of the second derivative of every row or
+// column, by the recurrence d_{k-1} = d_{k+1} + 2 k c_k applied twice, so
+// |p_zz_x| <= sum over rows of sum |d_k|, never above the cruder
+// sum |c_ij| i^2 (i^2 - 1) / 3), |f_zz| estimated: twice the largest second
 // difference (f(z - h) - 2 f(z) + f(z + h)) / h^2 of the exact values along
 // every grid line of the patch (a mean-value of f_zz over two steps; the
 // factor 2 is the safety against f_zz peaking between nodes; it is an
 // estimate, not a proof, and the one term of the bound that is not proved).
-// The rounding term follows the float32 evaluation: the coordinate map
-// (8 units of float32 rounding u = 2^-24 in s, times the patch scale, times
-// the proved slope sum |c_ij| i^2), the coefficients' rounding to float32
-// (u / 2 sum |c_ij|), and Clenshaw's recurrence (each step's rounding, at
-// most 4 u (|c_k| + 2 |b_k+1| + |b_k+2|), propagated by |U_k| <= k + 1,
-// with |b_k| <= sum_{m >= k} |c_m| (m - k + 1)).
+// The rounding term follows the float32 evaluation under one of two
+// precision models (FitPrecision): +, -, * correctly rounded (u / 2
+// relative, u = 2^-24), log within 3 ulp (6 u) or 2^-21 absolute near 1,
+// and / and sqrt correctly rounded (kIeee: the emitted C++, IEEE binary32
+// without -ffast-math, and EvaluateFloat) or within 2.5 ulp (5 u) and 4.5
+// ulp (9 u: GLSL ES 3.00's and WGSL's 1 / inversesqrt) (kShader: the
+// emitted shaders, whose files state that bound). The coordinate map's error ds in s (per map and
+// patch, FitRoundingBound), then z = (2 s - lo - hi) / (hi - lo) within
+// dz <= (2 ds + u) / w + 7 u, times the proved slope |p_z| <= sum |d_k| of
+// the first derivative's coefficients (as above); and Clenshaw's recurrence
+// (each step's rounding at most 2 u (|c_k| + 2 |b_k+1| + |b_k+2|),
+// propagated by |U_k| <= k + 1, with |b_k| <= sum_{m >= k} |c_m| (m - k + 1)).
+// The coefficients are float32 values when the grid term is measured, so
+// their own rounding is in it already.
 #pragma once
 
 #include <array>
@@ -114,22 +124,28 @@ struct FitMapConstants {
 };
 FitMapConstants FitMapConstantsOf(const PiecewiseChebyshev &f);
 
+// The float32 arithmetic a rounding bound assumes (see the top).
+enum class FitPrecision { kIeee, kShader };
+
 // The certificate of one channel (all bounds absolute, in the table's units).
 struct FitChannelBound {
   double gridError = 0.0;             // max |p - f~| over the grid nodes
   double betweenNodes = 0.0;          // the interpolation term (worst patch)
   double exactError = 0.0;            // max bound of the exact values used
-  double rounding = 0.0;              // float32 evaluation (worst patch)
+  double rounding = 0.0;              // float32 evaluation, kIeee (worst patch)
+  double shaderRounding = 0.0;        // the same, kShader
   double bound = 0.0;                 // max over patches of the sum, + exactError
+  double shaderBound = 0.0;           // the same with shaderRounding
   double worstX = 0.0, worstY = 0.0;  // where gridError is
 };
 
 struct FitCertificate {
   std::vector<FitChannelBound> channels;
-  double maxError = 0.0;    // max over channels of bound
-  uint64_t gridPoints = 0;  // exact values evaluated for the certificate
-  uint64_t fitPoints = 0;   // exact values evaluated to choose and fit
-  std::string method;       // the bound's method in words
+  double maxError = 0.0;        // max over channels of bound (the C++: kIeee)
+  double shaderMaxError = 0.0;  // max over channels of shaderBound (the shaders)
+  uint64_t gridPoints = 0;      // exact values evaluated for the certificate
+  uint64_t fitPoints = 0;       // exact values evaluated to choose and fit
+  std::string method;           // the bound's method in words
 };
 
 // An exact value of the table at (x, y) with its error bound, per channel.
@@ -171,6 +187,11 @@ FitCertificate CertifyFit(const PiecewiseChebyshev &fit, const FitExact &exact, 
                           double gridScale = 1.0);
 
 // The a-priori float32 rounding bound of one patch of one channel.
-double FitRoundingBound(const PiecewiseChebyshev &fit, int channel, int kx, int ky);
+double FitRoundingBound(const PiecewiseChebyshev &fit, int channel, int kx, int ky,
+                        FitPrecision precision = FitPrecision::kShader);
+
+// The certificate as a shader states it: bounds and maxError with the
+// kShader rounding in place of the kIeee one.
+FitCertificate ShaderCertificate(const FitCertificate &certificate);
 
 }  // namespace lutbake

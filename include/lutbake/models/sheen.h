@@ -33,9 +33,13 @@
 
 namespace lutbake {
 
-enum class SheenVisibility { kCharlie, kAshikhmin };
+// The sheen's visibility V (see SheenCosineVisibility): Charlie's
+// height-correlated Smith form with Estevez-Kulla's fitted Lambda, OSPRay's
+// variant of it (the light's Lambda softened, SheenDistribution.ih
+// evalLambdaI), or Ashikhmin's closed form.
+enum class SheenVisibility { kCharlie, kAshikhmin, kOspray };
 
-// "charlie", "ashikhmin".
+// "charlie", "ashikhmin", "ospray".
 std::string_view ToString(SheenVisibility visibility);
 // The inverse of ToString; false (and *visibility unchanged) for any other text.
 bool ParseSheenVisibility(std::string_view text, SheenVisibility *visibility);
@@ -65,9 +69,23 @@ double CharlieLambda(double mu, double alpha);
 // The fit's exponent c (the branch-point order of Lambda at mu = 0 and 1).
 double CharlieLambdaExponent(double alpha);
 
+// Whether the visibility is Charlie's form 1 / (1 + Lambda(mu_o) +
+// Lambda_i(mu_i)) (charlie, ospray): its 1 / mu_o, its branch points.
+bool UsesCharlieLambda(SheenVisibility visibility);
+// The light's Lambda_i in that form: Lambda(mu_i) (charlie), or OSPRay's
+// artistic "softer light terminator" (SheenDistribution.ih, evalLambdaI),
+//   Lambda_i(mu_i) = Lambda(mu_i)^(1 + 2 (1 - mu_i)^8)     (ospray),
+// computed as exp((1 + 2 (1 - mu_i)^8) l) from the fit's log l. Like
+// Lambda, it decreases with mu_i (its exponent grows where Lambda > 1, and
+// where Lambda < 1, mu_i > ~0.6, the exponent's slope 16 (1 - mu_i)^7 <
+// 0.03 is dwarfed by log Lambda's; SheenModel.OsprayLightLambdaSoftens-
+// Charlies checks it on a grid), so W below grows with mu_i.
+double SheenLightLambda(SheenVisibility visibility, double mu_i, double alpha);
+
 // W = V mu_i, the cosine-weighted visibility, for mu_o in (0, 1] (charlie) or
 // [0, 1] (ashikhmin) and mu_i in [0, 1]:
 //   charlie:   W = 1 / (4 mu_o (1 + Lambda(mu_o) + Lambda(mu_i))),
+//   ospray:    W = 1 / (4 mu_o (1 + Lambda(mu_o) + Lambda_i(mu_i))) (above),
 //   ashikhmin: W = mu_i / (4 (mu_i + mu_o (1 - mu_i)))   (0 at mu_i = mu_o = 0).
 // The directional albedo is the integral of D W over the light directions.
 double SheenCosineVisibility(SheenVisibility visibility, double alpha, double mu_o, double mu_i);

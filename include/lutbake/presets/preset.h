@@ -156,7 +156,10 @@ const char *DescribeAlpha(AlphaMapping alpha);
 // A format that holds only [0, 1] (PNG) takes min(stored, clampMax), and
 // one that holds no negative value (RGBD) max(stored, clampMin); the
 // texel's bound then adds what the clamp moved it by, so that it still
-// covers the value as stored.
+// covers the value as stored. clampIsValue: the engine's table is defined
+// as the clamped value (OSPRay's min(mean, 1)), so the clamp is not an
+// error: the bound is the integral's own (a clamp moves two values no
+// farther apart).
 struct PresetChannel {
   std::string meaning;
   // The table an LTC entry is a fit of (one that fits a lobe); empty: the
@@ -168,6 +171,7 @@ struct PresetChannel {
   std::string over = {};
   double scale = 1.0, offset = 0.0;
   double clampMin = -1e300, clampMax = 1e300;
+  bool clampIsValue = false;
 };
 
 // What a channel reads, from the list of quantities: the registered table
