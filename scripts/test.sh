@@ -11,11 +11,13 @@ SUDO=""
 if [ "$(id -u)" != 0 ]; then SUDO=sudo; fi
 export DEBIAN_FRONTEND=noninteractive
 # clang++: the generated headers are compiled with both compilers, and the
-# sanitizer build uses it. OpenImageIO (and oiiotool): the tests' independent
+# sanitizer build uses it with its runtime (libclang-rt-14-dev, only a
+# recommendation of clang, which --no-install-recommends leaves out: a fresh
+# Debian 12 root then fails to link the ASan build). OpenImageIO (and oiiotool): the tests' independent
 # reader of EXR and PNG. GoogleTest; Google Benchmark (scripts/benchmark.cpp
 # is built so that it keeps compiling).
 $SUDO apt-get install -y -qq --no-install-recommends \
-  clang libopenimageio-dev openimageio-tools libgtest-dev libbenchmark-dev >/dev/null
+  clang libclang-rt-14-dev libopenimageio-dev openimageio-tools libgtest-dev libbenchmark-dev >/dev/null
 # The shader tests (tests/formats/shader_code_test.cpp, browser_furnace_test.cpp):
 # glslangValidator compiles the emitted GLSL and HLSL to SPIR-V, spirv-val
 # validates it; headless Chromium compiles the WGSL with Tint (WebGPU on its
