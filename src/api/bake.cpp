@@ -1,8 +1,9 @@
 // lutbake::Bake for tables and bake plans (the preset path is
 // preset_bake.cpp). The sequence: validate the request, make the job list
 // (tables by name, or a plan's tables), check the sizes and estimators,
-// open the output transaction, bake and write each table, add the helper
-// headers and shader files, commit.
+// open the output transaction, bake and write each table (RunBakeJobs,
+// bake_jobs.cpp: the loop presets run too), add the helper headers and
+// shader files, commit.
 #include "lutbake/api/bake.h"
 
 #include <tbb/global_control.h>
@@ -17,6 +18,7 @@
 #include <thread>
 
 #include "bake_internal.h"
+#include "bake_jobs.h"
 #include "lutbake/api/names.h"
 #include "lutbake/api/plan.h"
 #include "lutbake/formats/format.h"
@@ -35,7 +37,7 @@ constexpr int kMaxSize = 4096;
 
 // One table to bake: its kind, settings and axes, the name of its files,
 // and what the plan adds to its metadata.
-struct BakeJob {
+struct TableJob {
   const TableDefinition *table;
   BakeSettings settings;
   Axis x, y;
@@ -46,7 +48,7 @@ struct BakeJob {
 
 // What the jobs share beyond their own settings.
 struct JobList {
-  std::vector<BakeJob> jobs;
+  std::vector<TableJob> jobs;
   bool schlickFavgHeader = false;  // the plan's closed-form Favg.h
   Metadata planMetadata;
   bool planNeedsNothing = false;
@@ -135,7 +137,7 @@ JobList PlanJobs(const BakeRequest &r, const BakeSettings &settings) {
     for (const std::string &path : *paths) sources += (sources.empty() ? "" : ", ") + path;
   list.planMetadata.emplace_back("planSources", sources);
   for (const PlannedTable &t : plan.tables) {
-    BakeJob job{t.definition, PlannedSettings(t, settings), t.x, t.y, t.name, list.planMetadata};
+    TableJob job{t.definition, PlannedSettings(t, settings), t.x, t.y, t.name, list.planMetadata};
     // The plan's IORs, or the table's own third axis.
     job.z = t.z.name.empty() ? DefaultDepthAxis(*t.definition, job.settings) : t.z;
     job.metadata.emplace_back("planMaterials", JoinNames(t.materials));
@@ -149,7 +151,7 @@ JobList MakeJobs(const BakeRequest &r, const BakeSettings &settings) {
   if (!r.scenes.empty() || !r.manifests.empty()) return PlanJobs(r, settings);
   JobList list;
   for (const std::string &name : r.tables.value_or(DefaultTables())) {
-    BakeJob job{&TableNamed(name), settings, {}, {}, name, {}};
+    TableJob job{&TableNamed(name), settings, {}, {}, name, {}};
     DefaultAxes(*job.table, settings, &job.x, &job.y, &job.z);
     list.jobs.push_back(job);
   }
@@ -157,11 +159,11 @@ JobList MakeJobs(const BakeRequest &r, const BakeSettings &settings) {
 }
 
 // Sizes and estimators, before any work.
-void CheckJobs(const std::vector<BakeJob> &jobs) {
+void CheckJobs(const std::vector<TableJob> &jobs) {
   // A 3D table of --size N and --eta-size M has N^2 M texels: at most
   // kMaxSize^2 in all, as the largest 2D table (values and bounds in double
   // take 32 bytes a texel and channel).
-  for (const BakeJob &job : jobs) {
+  for (const TableJob &job : jobs) {
     const double texels = static_cast<double>(job.x.count) * job.y.count * job.z.count;
     if (texels > static_cast<double>(kMaxSize) * kMaxSize)
       throw UsageError(job.name + " would have " + std::to_string(job.x.count) + " x " +
@@ -169,7 +171,7 @@ void CheckJobs(const std::vector<BakeJob> &jobs) {
                        " texels; accepted: at most " + std::to_string(kMaxSize) + " x " +
                        std::to_string(kMaxSize) + " in all (lower --size or --eta-size)");
   }
-  for (const BakeJob &job : jobs)
+  for (const TableJob &job : jobs)
     if (const std::string problem = job.table->EstimatorProblem(job.settings.estimator);
         !problem.empty())
       throw UsageError("--estimator " + std::string(ToString(job.settings.estimator)) + ": " +
@@ -200,10 +202,10 @@ Axis SampleOf(const Axis &axis, int n) {
   return ListedAxis(axis.name, nodes);
 }
 
-void EstimateLargeRequests(const std::vector<BakeJob> &jobs, int threads,
+void EstimateLargeRequests(const std::vector<TableJob> &jobs, int threads,
                            const std::function<void(const std::string &)> &note) {
   if (!note) return;
-  for (const BakeJob &job : jobs) {
+  for (const TableJob &job : jobs) {
     const size_t texels = static_cast<size_t>(job.x.count) * job.y.count * job.z.count;
     if (texels < kSmallestTimed) continue;
     const Axis x = SampleOf(job.x, 16), y = SampleOf(job.y, 16), z = SampleOf(job.z, 2);
@@ -263,7 +265,32 @@ WriteOptions WriteOptionsOf(const BakeRequest &r) {
   return options;
 }
 
-// The state of one bake run while it writes.
+// The loop's job (bake_jobs.h) of one table: BakeTableOn over its axes,
+// under its name, in each of `formats`, and its error map if asked; with
+// `shapes`, the table without its values goes there for the shader files.
+BakeJob LoopJobOf(const TableJob &job, const std::vector<const TableFormat *> &formats,
+                  bool errorMap, std::vector<Table> *shapes) {
+  BakeJob loopJob;
+  loopJob.name = job.name;
+  loopJob.make = [&job](const ProgressFn &progress, BakeStats *stats) {
+    Table table = BakeTableOn(*job.table, job.settings, job.x, job.y, job.z, progress, stats);
+    if (job.name != job.table->Name()) table.name = job.name;
+    return table;
+  };
+  for (const TableFormat *format : formats)
+    loopJob.files.push_back({job.name + format->extension, format});
+  loopJob.metadata = job.metadata;
+  loopJob.errorMap = errorMap;
+  if (shapes)
+    loopJob.written = [shapes](const Table &table, const BakedTable &) {
+      shapes->push_back(table);
+      shapes->back().values.clear();
+      shapes->back().errors.clear();
+    };
+  return loopJob;
+}
+
+// The state of one bake run while it writes its helper and shader files.
 struct Run {
   const BakeRequest &request;
   const JobList &list;
@@ -272,78 +299,7 @@ struct Run {
   OutputTransaction &output;
   BakeResult &result;
   std::vector<Table> shapes;  // the baked tables without values, for the shader files
-  std::vector<std::string> unreached;
 };
-
-void BakeJobInto(Run &run, const BakeJob &job) {
-  const BakeRequest &r = run.request;
-  BakeStats stats;
-  ProgressFn progress;
-  if (r.progress) progress = [&r, &job](double fraction) { r.progress(job.name, fraction); };
-  Table table = BakeTableOn(*job.table, job.settings, job.x, job.y, job.z, progress, &stats);
-  if (job.name != job.table->Name()) table.name = job.name;
-  table.metadata.insert(table.metadata.end(), job.metadata.begin(), job.metadata.end());
-  BakedTable baked;
-  // The table's files, written at once (the writers only read the table).
-  if (r.cancellation) r.cancellation->ThrowIfCancelled();
-  std::vector<std::pair<std::string, std::function<void(const std::string &)>>> writes;
-  for (const TableFormat *format : run.formats)
-    writes.emplace_back(job.name + format->extension, [&, format](const std::string &temporary) {
-      format->makeWriter()->Write(table, temporary, run.writeOptions);
-    });
-  const std::vector<std::string> paths = run.output.WriteEach(writes);
-  for (size_t k = 0; k < run.formats.size(); ++k) {
-    const TableFormat *format = run.formats[k];
-    const BoundSummary bounds = SummarizeStoredBounds(table, format->storage(run.writeOptions));
-    run.result.files.push_back({paths[k], job.name, format->name, bounds.max, bounds.rms});
-    baked.files.push_back(paths[k]);
-  }
-  if (!r.shaders.empty()) {
-    run.shapes.push_back(table);
-    run.shapes.back().values.clear();
-    run.shapes.back().errors.clear();
-  }
-  if (r.errorMaps) {
-    if (r.cancellation) r.cancellation->ThrowIfCancelled();
-    const std::string path =
-        run.output.Write(job.name + ".err.exr", [&](const std::string &temporary) {
-          MakeExrWriter()->Write(ErrorMapOf(table), temporary, run.writeOptions);
-        });
-    run.result.files.push_back({path, job.name, "error-map", 0.0, 0.0});
-    baked.files.push_back(path);
-  }
-  // A fitted table's per-texel measures (ltc_ggx: lobe error, polygon
-  // error, leakage), always: they are what its values are worth.
-  if (!table.fitMaps.empty()) {
-    if (r.cancellation) r.cancellation->ThrowIfCancelled();
-    const std::string path =
-        run.output.Write(job.name + ".fit.exr", [&](const std::string &temporary) {
-          MakeExrWriter()->Write(FitMapOf(table), temporary, run.writeOptions);
-        });
-    run.result.files.push_back({path, job.name, "fit-map", 0.0, 0.0});
-    baked.files.push_back(path);
-  }
-  // The bound as the float32 files state it (rounding included).
-  const BoundSummary stored = SummarizeStoredBounds(table, ValueType::kFloat32);
-  baked.name = job.name;
-  baked.width = table.width();
-  baked.height = table.height();
-  baked.depth = table.is3D() ? table.depth() : 1;
-  baked.channels = table.channels;
-  baked.estimator = *table.FindMetadata("estimator");
-  baked.samples = stats.samples;
-  baked.maxTexelSamples = stats.maxTexelSamples;
-  baked.quadratureTexels = stats.quadratureTexels;
-  baked.evaluations = stats.evaluations;
-  baked.seconds = stats.seconds;
-  baked.errorMax = stored.max;
-  baked.errorRms = stored.rms;
-  baked.integrationErrorMax = table.MaxError();
-  if (stats.unconverged > 0)
-    run.unreached.push_back(job.name + " (" + std::to_string(stats.unconverged) + " texels)");
-  if (r.tableDone) r.tableDone(baked);
-  run.result.tables.push_back(baked);
-}
 
 // The metadata of a file that holds functions and no table of its own:
 // what it is, then the plan's sources, the version and the command line.
@@ -376,12 +332,12 @@ void WriteHelperFiles(Run &run) {
   // Kulla-Conty helpers wherever a header bake holds both a table and the
   // average that declares them (TableRelations::kullaConty) for one model:
   // E and Eavg, E_beckmann and Eavg_beckmann, ...
-  for (const BakeJob &job : run.list.jobs) {
+  for (const TableJob &job : run.list.jobs) {
     const TableRelations relations = job.table->Relations();
     if (!headers || !relations.kullaConty) continue;
     const std::string suffix = job.name.substr(std::string(job.table->Name()).size());
     const bool averaged =
-        std::any_of(run.list.jobs.begin(), run.list.jobs.end(), [&](const BakeJob &other) {
+        std::any_of(run.list.jobs.begin(), run.list.jobs.end(), [&](const TableJob &other) {
           return other.table->Name() == relations.averageOf &&
                  other.name == relations.averageOf + suffix;
         });
@@ -511,20 +467,21 @@ BakeResult Bake(const BakeRequest &r) {
                                   static_cast<size_t>(result.threads));
   const auto start = std::chrono::steady_clock::now();
   EstimateLargeRequests(list.jobs, result.threads, r.note);
-  Run run{r, list, formats, WriteOptionsOf(r), output, result, {}, {}};
-  for (const BakeJob &job : list.jobs) BakeJobInto(run, job);
+  Run run{r, list, formats, WriteOptionsOf(r), output, result, {}};
+  std::vector<BakeJob> loopJobs;
+  for (const TableJob &job : list.jobs)
+    loopJobs.push_back(
+        LoopJobOf(job, formats, r.errorMaps, r.shaders.empty() ? nullptr : &run.shapes));
+  const std::vector<std::string> unreached =
+      RunBakeJobs(loopJobs, r, run.writeOptions, output, &result);
   WriteHelperFiles(run);
-  if (!run.unreached.empty())
+  if (!unreached.empty())
     throw Error(Error::Kind::kRuntime,
                 "--tolerance " + StreamedNumber(settings.tolerance) + " not reached within " +
                     "--max-samples " + std::to_string(settings.maxSamples) + " in " +
-                    JoinNames(run.unreached) +
+                    JoinNames(unreached) +
                     "; nothing written. Raise --max-samples or drop --sampling-only.");
-  output.Commit(r.cancellation);
-  result.foreignFiles = output.foreignFiles();
-  result.removedFiles = output.removedFiles();
-  result.files.push_back({output.PathOf(kSetManifestName), "", "set", 0.0, 0.0});
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  CommitBake(output, r, start, &result);
   result.json = SummaryJson(result);
   return result;
 }

@@ -1,4 +1,6 @@
-// The preset path of lutbake::Bake (bake.h), and checking what it wrote.
+// The preset path of lutbake::Bake (bake.h): a job per texture for the
+// loop tables run too (bake_jobs.h), and preset.json; and checking what it
+// wrote.
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -10,12 +12,12 @@
 #include <nlohmann/json.hpp>
 
 #include "bake_internal.h"
+#include "bake_jobs.h"
 #include "lutbake/api/names.h"
 #include "lutbake/api/presets.h"
 #include "lutbake/formats/format.h"
 #include "lutbake/formats/output_transaction.h"
 #include "lutbake/tables/bake.h"
-#include "lutbake/tables/storage.h"
 
 namespace lutbake {
 
@@ -136,13 +138,14 @@ nlohmann::ordered_json ModelJson(const PresetTexture &texture) {
   return model;
 }
 
-// preset.json's entry of one written texture.
-nlohmann::ordered_json FileJson(const PresetTexture &texture, const Table &table, ValueType storage,
-                                const BoundSummary &bounds) {
+// preset.json's entry of one written texture (`baked`: its summary, which
+// states its file's storage and bounds).
+nlohmann::ordered_json FileJson(const PresetTexture &texture, const Table &table,
+                                const BakedTable &baked) {
   nlohmann::ordered_json f;
   f["file"] = texture.file;
   f["format"] = texture.format;
-  f["storage"] = ToString(storage);
+  f["storage"] = baked.storage;
   f["width"] = table.width();
   f["height"] = table.height();
   if (table.is3D()) f["depth"] = table.depth();
@@ -167,8 +170,8 @@ nlohmann::ordered_json FileJson(const PresetTexture &texture, const Table &table
   }
   f["channels"] = channels;
   f["model"] = ModelJson(texture);
-  f["errorMax"] = bounds.max;
-  f["errorRms"] = bounds.rms;
+  f["errorMax"] = baked.errorMax;
+  f["errorRms"] = baked.errorRms;
   f["integrationErrorMax"] = table.MaxError();
   f["sampling"] = texture.sampling;
   f["source"] = texture.source;
@@ -182,20 +185,35 @@ const TableFormat &FormatOf(const PresetTexture &texture) {
   return *format;
 }
 
+// The bake loop's job (bake_jobs.h) of one texture: BakePresetTexture,
+// timed, in its one file and format, its entry appended to the files of
+// preset.json (`manifest`) once written.
+BakeJob TextureJob(const PresetTexture &texture, const Preset &preset, const BakeRequest &r,
+                   nlohmann::ordered_json *manifest) {
+  BakeJob job;
+  job.name = texture.file;
+  job.make = [&texture, &preset, &r](const ProgressFn &progress, BakeStats *stats) {
+    const auto start = std::chrono::steady_clock::now();
+    Table table = BakePresetTexture(texture, preset.name, r.cancellation, progress);
+    stats->seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return table;
+  };
+  job.files = {{texture.file, &FormatOf(texture)}};
+  job.metadata = {{"lutbakeVersion", LutbakeVersion()}, {"commandLine", r.commandLine}};
+  job.summaryOfItsFile = true;
+  job.written = [&texture, manifest](const Table &table, const BakedTable &baked) {
+    (*manifest)["files"].push_back(FileJson(texture, table, baked));
+  };
+  return job;
+}
+
 }  // namespace
 
 BakeResult BakePreset(const BakeRequest &r) {
   RefuseFixedOptions(r);
   const Preset *preset = FindPreset(r.preset);
   if (!preset) throw UsageError("--preset " + r.preset + ": accepted: " + PresetNameList());
-  const std::vector<const PresetTexture *> textures = ChosenTextures(r, *preset);
-  OutputTransaction output(r.outputDirectory, "--out", OutputMode::kSet, r.commandLine);
-  BakeResult result;
-  result.outputDirectory = r.outputDirectory;
-  result.threads = ThreadCount(r.threads);
-  tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
-                                  static_cast<size_t>(result.threads));
-  const auto start = std::chrono::steady_clock::now();
   nlohmann::ordered_json manifest;
   manifest["preset"] = preset->name;
   manifest["engine"] = preset->engine;
@@ -203,47 +221,20 @@ BakeResult BakePreset(const BakeRequest &r) {
   manifest["lutbakeVersion"] = LutbakeVersion();
   manifest["commandLine"] = r.commandLine;
   manifest["files"] = nlohmann::ordered_json::array();
-  const WriteOptions writeOptions;
-  for (const PresetTexture *texture : textures) {
-    const auto textureStart = std::chrono::steady_clock::now();
-    Table table = BakePresetTexture(*texture, preset->name, r.cancellation, [&](double f) {
-      if (r.progress) r.progress(texture->file, f);
-    });
-    table.metadata.emplace_back("lutbakeVersion", LutbakeVersion());
-    table.metadata.emplace_back("commandLine", r.commandLine);
-    const TableFormat &format = FormatOf(*texture);
-    const std::unique_ptr<TableWriter> writer = format.makeWriter();
-    if (r.cancellation) r.cancellation->ThrowIfCancelled();
-    const std::string path = output.Write(texture->file, [&](const std::string &temporary) {
-      writer->Write(table, temporary, writeOptions);
-    });
-    const ValueType storage = format.storage(writeOptions);
-    const BoundSummary bounds = SummarizeStoredBounds(table, storage);
-    result.files.push_back({path, texture->file, format.name, bounds.max, bounds.rms});
-    manifest["files"].push_back(FileJson(*texture, table, storage, bounds));
-    BakedTable baked;
-    baked.name = texture->file;
-    baked.width = table.width();
-    baked.height = table.height();
-    baked.depth = table.is3D() ? table.depth() : 1;
-    baked.channels = table.channels;
-    baked.storage = ToString(storage);
-    baked.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - textureStart).count();
-    baked.errorMax = bounds.max;
-    baked.errorRms = bounds.rms;
-    baked.integrationErrorMax = table.MaxError();
-    baked.files = {path};
-    if (r.tableDone) r.tableDone(baked);
-    result.tables.push_back(baked);
-  }
+  std::vector<BakeJob> jobs;
+  for (const PresetTexture *texture : ChosenTextures(r, *preset))
+    jobs.push_back(TextureJob(*texture, *preset, r, &manifest));
+  OutputTransaction output(r.outputDirectory, "--out", OutputMode::kSet, r.commandLine);
+  BakeResult result;
+  result.outputDirectory = r.outputDirectory;
+  result.threads = ThreadCount(r.threads);
+  tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
+                                  static_cast<size_t>(result.threads));
+  const auto start = std::chrono::steady_clock::now();
+  RunBakeJobs(jobs, r, WriteOptions(), output, &result);
   const std::string path = output.WriteText("preset.json", manifest.dump(2) + "\n");
   result.files.push_back({path, "", "json", 0.0, 0.0});
-  output.Commit(r.cancellation);
-  result.foreignFiles = output.foreignFiles();
-  result.removedFiles = output.removedFiles();
-  result.files.push_back({output.PathOf(kSetManifestName), "", "set", 0.0, 0.0});
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  CommitBake(output, r, start, &result);
   manifest["seconds"] = result.seconds;
   result.presetJson = manifest.dump(2);
   result.json = result.presetJson;
