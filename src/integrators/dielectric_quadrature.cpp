@@ -42,6 +42,18 @@ constexpr double kNearEta = 4.0;
 // their bound, e.g. mu_o = 0.6875, r = 0.229: 1.23e-8 off, bound 5.1e-9,
 // against the adaptive reference and the rule itself at 1e-12).
 constexpr double kExtremeEta = 16.0;
+// Beckmann's rule starts at levels 3 and 4 (12 and 16 nodes, eta in [1/4,
+// 4]; 14 and 19 beyond). From levels 1 and 2 its first panels agreed by
+// chance, against the rule at 1e-11: glass at mu_o = 0.1875, r = 0.854, eta
+// = 0.999, the panel [1.77, pi] at 6 and 9 nodes 9.4e-10 apart and 5.3e-8 off
+// (bound 4.1e-9, adaptive reference 0.711407183754); 6 of 20736 points (24^2,
+// 18 etas from 1/128 to 128, both lobe sets) outside their bounds at 1e-8 and
+// 14 at check's 2.3e-9, up to 12.7x. From levels 2 and 3, 15 at 2.3e-9 (up
+// to 3.5x). From 3 and 4 none there, nor on 16000 random points (eta 1/39 to
+// 39) at either tolerance (worst error / bound 0.66), at 2.2x the facet
+// weights of the start at 1 and 2. (GGX: kExtremeEta and the comments
+// on the near ladder.)
+constexpr int kBeckmannFirstLevel = 3;
 constexpr double kBoundFloor = 1e-10;
 // The level difference is multiplied by this: measured on 144 points of
 // both NDFs (eta in {1/2.42 .. 2.42}, mu_o 0.05..1, r 0.3..1) against the
@@ -511,7 +523,9 @@ Setup MakeSetup(NdfKind kind, SmithForm smith, DielectricLobes lobes, double alp
   const bool near = eta >= 1.0 / kNearEta && eta <= kNearEta;
   s.nodes = near ? kNodesNear : kNodesFar;
   s.innerKeep = near ? kInnerKeepNear : kInnerKeepFar;
-  s.firstLevel = eta > kExtremeEta || eta < 1.0 / kExtremeEta ? 2 : 1;
+  s.firstLevel = kind == NdfKind::kBeckmann                     ? kBeckmannFirstLevel
+                 : eta > kExtremeEta || eta < 1.0 / kExtremeEta ? 2
+                                                                : 1;
   return s;
 }
 
