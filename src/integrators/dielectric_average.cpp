@@ -377,23 +377,13 @@ void LayOuterPanels(const Setup &s, std::vector<OuterPanel> *out) {
 
 }  // namespace
 
-DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, DielectricLobes lobes,
-                                              double alpha, double eta, double tolerance) {
-  if (!(alpha >= 0.0 && alpha <= 1.0))
-    throw std::invalid_argument("dielectric average: alpha must lie in [0, 1]");
-  if (!(eta >= kMinRelativeIor && eta <= kMaxRelativeIor))
-    throw std::invalid_argument("dielectric average: eta must lie in [1/128, 128]");
-  if (!(tolerance > 0.0))
-    throw std::invalid_argument("dielectric average: tolerance must be positive");
+namespace {
+
+// The rule over the half vector (the header), for 0 < alpha <= 1.
+DielectricIntegral AverageOverHalfVector(NdfKind ndf, SmithForm smith, DielectricLobes lobes,
+                                         double alpha, double eta, double tolerance) {
   DielectricIntegral out;
   const bool glass = lobes == DielectricLobes::kReflectionAndTransmission;
-  if (alpha == 0.0 && glass) {
-    out.value = 1.0;  // the smooth interface scatters everything
-    out.exact = out.converged = true;
-    return out;
-  }
-  if (alpha == 0.0)  // the smooth interface: F_avg, from the rule that knows its kinks
-    return IntegrateDielectricAverageOverAlbedo(ndf, smith, lobes, alpha, eta, tolerance);
   Setup s;
   s.ndf = Ndf{ndf, alpha};
   s.smith = smith;
@@ -473,6 +463,54 @@ DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, Diel
     out.evaluations = evaluations + before.evaluations;
   }
   return out;
+}
+
+}  // namespace
+
+DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, DielectricLobes lobes,
+                                              double alpha, double eta, double tolerance) {
+  if (!(alpha >= 0.0 && alpha <= 1.0))
+    throw std::invalid_argument("dielectric average: alpha must lie in [0, 1]");
+  if (!(eta >= kMinRelativeIor && eta <= kMaxRelativeIor))
+    throw std::invalid_argument("dielectric average: eta must lie in [1/128, 128]");
+  if (!(tolerance > 0.0))
+    throw std::invalid_argument("dielectric average: tolerance must be positive");
+  DielectricIntegral out;
+  const bool glass = lobes == DielectricLobes::kReflectionAndTransmission;
+  if (alpha == 0.0 && glass) {
+    out.value = 1.0;  // the smooth interface scatters everything
+    out.exact = out.converged = true;
+    return out;
+  }
+  if (alpha == 0.0)  // the smooth interface: F_avg, from the rule that knows its kinks
+    return IntegrateDielectricAverageOverAlbedo(ndf, smith, lobes, alpha, eta, tolerance);
+  if (glass && eta < 1.0) {
+    // Reciprocity (the header): the reflection inside, and glass and its
+    // reflection entering at 1 / eta (in [1, 128] for eta in [1/128, 1)).
+    // Measured on the default glass_Eavg grid's eta < 1 slices (32 x 11
+    // texels, tolerance 1e-8): within 0.057 of the summed bounds of the
+    // direct rule, at 0.76 of its time.
+    const double eta2 = eta * eta, share = tolerance / (1.0 + 2.0 * eta2);
+    const DielectricIntegral inside =
+        AverageOverHalfVector(ndf, smith, DielectricLobes::kReflection, alpha, eta, share);
+    const DielectricIntegral entering =
+        AverageOverHalfVector(ndf, smith, lobes, alpha, 1.0 / eta, share);
+    const DielectricIntegral enteringReflected =
+        AverageOverHalfVector(ndf, smith, DielectricLobes::kReflection, alpha, 1.0 / eta, share);
+    out.value = inside.value + eta2 * (entering.value - enteringReflected.value);
+    out.bound = inside.bound + eta2 * (entering.bound + enteringReflected.bound);
+    out.converged = inside.converged && entering.converged && enteringReflected.converged &&
+                    out.bound <= tolerance * std::max(1.0, std::abs(out.value));
+    out.evaluations = inside.evaluations + entering.evaluations + enteringReflected.evaluations;
+    if (out.converged) return out;
+    // Not converged: the direct rule as well, keeping the smaller bound.
+    DielectricIntegral direct = AverageOverHalfVector(ndf, smith, lobes, alpha, eta, tolerance);
+    direct.evaluations += out.evaluations;
+    if (direct.bound < out.bound) return direct;
+    out.evaluations = direct.evaluations;
+    return out;
+  }
+  return AverageOverHalfVector(ndf, smith, lobes, alpha, eta, tolerance);
 }
 
 }  // namespace lutbake

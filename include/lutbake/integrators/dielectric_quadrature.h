@@ -209,6 +209,16 @@ DielectricIntegral IntegrateDielectricAverageOverAlbedo(NdfKind ndf, SmithForm s
 // jumps between neighbouring facets by about the inner rule's error) or the
 // G2 values pass 4e7, the rule above answers instead when its bound is the
 // smaller. alpha = 0: glass 1 exactly, reflection F_avg by the rule above.
+// Glass leaving the denser medium (eta < 1) comes from reciprocity: its
+// transmitted part T = E_avg,glass - E_avg,reflection obeys T(eta) = eta^2
+// T(1 / eta) (the BTDF's reciprocity with a G2 symmetric in its two
+// directions, both Smith forms), so
+//   E_avg,glass(eta) = E_avg,refl(eta) + eta^2 (E_avg,glass(1/eta) - E_avg,refl(1/eta)),
+// the three by the rule above at tolerance / (1 + 2 eta^2), the bound the
+// sum of theirs weighted alike (where that does not converge, the direct
+// rule as well, the smaller bound kept). On the default grid the rule over
+// the half vector costs 2.5 to 3.5 times as much for glass at eta < 1 as
+// for reflection there, and 3 to 5 times as much as for glass at 1 / eta.
 DielectricIntegral IntegrateDielectricAverage(NdfKind ndf, SmithForm smith, DielectricLobes lobes,
                                               double alpha, double eta, double tolerance);
 
