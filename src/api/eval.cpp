@@ -124,14 +124,80 @@ std::string EstimatorUsed(const PointValue &v, const BakeSettings &s) {
   return v.quadrature ? "quadrature" : std::string(ToString(s.estimator));
 }
 
+// The model options, the one place that spells them: f(option, meaning,
+// every value of its enum, the default, the ModelChoice field it sets), in
+// the order the command line offers them.
+template <typename F>
+void ForEachModelOption(F &&f) {
+  const BakeSettings unset;
+  f("ndf", "Microfacet distribution", kAllNdfKinds, unset.ndf, &ModelChoice::ndf);
+  f("smith", "Smith masking-shadowing form", kAllSmithForms, unset.smith, &ModelChoice::smith);
+  f("fresnel",
+    "Fresnel model: schlick (axis F0 in [0,1]), dielectric (exact, axis eta in [1,3]), "
+    "conductor (exact, axes eta in [0,4] x k in [0,10]), f82 (F82 tint, closed form, axes F0 in "
+    "[0,1] x tint in [0,1])",
+    kAllFresnelModels, unset.fresnel, &ModelChoice::fresnel);
+  f("sheen-visibility",
+    "Sheen visibility: charlie (Estevez-Kulla's fitted Lambda, as glTF's "
+    "KHR_materials_sheen), ashikhmin (1/(4 (mu_i + mu_o - mu_i mu_o))) or ospray",
+    kAllSheenVisibilities, unset.sheenVisibility, &ModelChoice::sheenVisibility);
+  f("sheen-alpha",
+    "The Charlie alpha from the roughness axis r (sheenRoughness): linear alpha = r, squared "
+    "alpha = r^2 (Filament's cloth, and the glTF extension's sample code)",
+    kAllAlphaMappings, unset.sheenAlpha, &ModelChoice::sheenAlpha);
+}
+
+// The names of an enum's values, as ToString spells them.
+template <typename Enum, size_t N>
+std::vector<std::string> NamesOf(const Enum (&all)[N]) {
+  std::vector<std::string> names;
+  for (Enum value : all) names.emplace_back(ToString(value));
+  return names;
+}
+
 }  // namespace
+
+std::vector<ModelOption> ModelOptions() {
+  std::vector<ModelOption> options;
+  ForEachModelOption([&options](const char *option, const char *meaning, const auto &all,
+                                auto unset, auto /*field*/) {
+    options.push_back({option, meaning, NamesOf(all), std::string(ToString(unset)), {}});
+    for (const TableDefinition *table : AllTables()) {
+      const std::vector<std::string> models = table->ModelOptions();
+      if (std::find(models.begin(), models.end(), option) != models.end())
+        options.back().tables.push_back(table->Name());
+    }
+  });
+  return options;
+}
+
+ModelChoice ModelsNamed(const std::map<std::string, std::string> &values) {
+  std::vector<std::string> options;
+  ForEachModelOption([&options](const char *option, auto &&...) { options.push_back(option); });
+  for (const auto &entry : values)
+    if (std::find(options.begin(), options.end(), entry.first) == options.end())
+      throw UsageError("--" + entry.first +
+                       " is not a model option; accepted: " + JoinNames(options));
+  ModelChoice choice;
+  ForEachModelOption([&](const char *option, const char *, const auto &all, auto, auto field) {
+    const auto given = values.find(option);
+    if (given == values.end()) return;
+    for (const auto value : all)
+      if (ToString(value) == given->second) {
+        choice.*field = value;
+        return;
+      }
+    throw UsageError("--" + given->first + ": '" + given->second +
+                     "' is not accepted; accepted: " + JoinNames(NamesOf(all)));
+  });
+  return choice;
+}
 
 std::vector<EvalCoordinateOption> EvalCoordinateOptions() {
   std::vector<EvalCoordinateOption> options;
   std::vector<std::vector<PointCoordinate>> seen;  // per option, as the tables give it
   for (const TableDefinition *table : AllTables())
-    for (FresnelModel model : {FresnelModel::kSchlick, FresnelModel::kDielectric,
-                               FresnelModel::kConductor, FresnelModel::kF82}) {
+    for (FresnelModel model : kAllFresnelModels) {
       BakeSettings settings;
       settings.fresnel = model;
       for (const PointCoordinate &c : table->Coordinates(settings)) {

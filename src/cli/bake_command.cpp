@@ -15,19 +15,6 @@
 
 namespace lutbake::cli {
 
-NdfKind ParseNdf(const std::string &s) {
-  return s == "beckmann" ? NdfKind::kBeckmann : NdfKind::kGgx;
-}
-SmithForm ParseSmith(const std::string &s) {
-  return s == "separable" ? SmithForm::kSeparable : SmithForm::kCorrelated;
-}
-FresnelModel ParseFresnel(const std::string &s) {
-  if (s == "dielectric") return FresnelModel::kDielectric;
-  if (s == "conductor") return FresnelModel::kConductor;
-  if (s == "f82") return FresnelModel::kF82;
-  return FresnelModel::kSchlick;
-}
-
 namespace {
 
 constexpr int kMaxSize = 4096;  // texels per axis (the library refuses larger 3D tables too)
@@ -83,14 +70,7 @@ void SetupBakeCommand(CLI::App &app, BakeOptions &o) {
                  "leaves out is an error)")
       ->capture_default_str()
       ->check(ListOf(TableNames()));
-  AddModelOptions(app, o.ndf, o.smith);
-  AddSheenOptions(app, o.sheenVisibility, o.sheenAlpha);
-  app.add_option("--fresnel", o.fresnel,
-                 "Fresnel model of the Favg table: schlick (axis F0 in [0,1]), dielectric (exact, "
-                 "axis eta in [1,3]), conductor (exact, axes eta in [0,4] x k in [0,10]), f82 (F82 "
-                 "tint, closed form, axes F0 in [0,1] x tint in [0,1])")
-      ->capture_default_str()
-      ->check(OneOf({"schlick", "dielectric", "conductor", "f82"}));
+  AddModelOptions(app, o.models);
   app.add_option("--size", o.size,
                  "Texels per axis for every table (default: 32 for E, Eavg, Favg; 128 for dfg)")
       ->type_name("N")
@@ -142,7 +122,7 @@ BakeRequest RequestOf(const BakeOptions &o, CLI::App &app) {
   r.outputDirectory = o.outDir;
   if (given("--tables")) r.tables = SplitList(o.tables);
   if (given("--format")) r.formats = SplitList(o.formats);
-  ModelsOf(o, app, &r);
+  ModelsOf(o.models, app, &r);
   r.size = o.size;
   r.etaSize = o.etaSize;
   r.sampling = SamplingRequestOf(o.sampling, app);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -15,13 +16,9 @@ namespace lutbake::cli {
 struct BakeOptions {
   std::string outDir;
   std::string tables = "E,Eavg,Favg,dfg";
-  std::string ndf = "ggx";
-  std::string smith = "correlated";
-  std::string fresnel = "schlick";
-  std::string sheenVisibility = "charlie";
-  std::string sheenAlpha = "linear";
-  int size = 0;     // 0: the per-table defaults
-  int etaSize = 0;  // texels of a 3D table's eta axis; 0: its default
+  std::map<std::string, std::string> models;  // by option name ("ndf", ...: lutbake::ModelOptions)
+  int size = 0;                               // 0: the per-table defaults
+  int etaSize = 0;                            // texels of a 3D table's eta axis; 0: its default
   SamplingOptions sampling;
   bool errorMap = false;
   int threads = 0;  // 0: all cores
@@ -37,25 +34,6 @@ struct BakeOptions {
   std::string preset;       // --preset NAME: an engine's textures (preset_command.h)
   std::string presetFiles;  // --files A,B: only these of the preset's files
 };
-
-// Option values (already validated) to library enums; shared with report.
-NdfKind ParseNdf(const std::string &name);
-SmithForm ParseSmith(const std::string &name);
-FresnelModel ParseFresnel(const std::string &name);
-
-// The model options given (ndf, smith, fresnel, sheen-visibility,
-// sheen-alpha; already validated) into a request's optional models.
-template <typename Options, typename Request>
-void ModelsOf(const Options &o, CLI::App &app, Request *r) {
-  SheenVisibility visibility = SheenVisibility::kCharlie;
-  SheenAlpha alpha = SheenAlpha::kLinear;
-  if (app.count("--ndf")) r->ndf = ParseNdf(o.ndf);
-  if (app.count("--smith")) r->smith = ParseSmith(o.smith);
-  if (app.count("--fresnel")) r->fresnel = ParseFresnel(o.fresnel);
-  if (app.count("--sheen-visibility") && ParseSheenVisibility(o.sheenVisibility, &visibility))
-    r->sheenVisibility = visibility;
-  if (app.count("--sheen-alpha") && ParseSheenAlpha(o.sheenAlpha, &alpha)) r->sheenAlpha = alpha;
-}
 
 void SetupBakeCommand(CLI::App &app, BakeOptions &options);
 

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <iostream>
 #include <sstream>
 
@@ -65,27 +66,16 @@ CLI::Validator CppNamespace() {
                         "C++ namespace");
 }
 
-void AddModelOptions(CLI::App &app, std::string &ndf, std::string &smith) {
-  app.add_option("--ndf", ndf, "Microfacet distribution")
-      ->capture_default_str()
-      ->check(OneOf({"ggx", "beckmann"}));
-  app.add_option("--smith", smith, "Smith masking-shadowing form")
-      ->capture_default_str()
-      ->check(OneOf({"correlated", "separable"}));
-}
-
-void AddSheenOptions(CLI::App &app, std::string &visibility, std::string &alpha) {
-  app.add_option("--sheen-visibility", visibility,
-                 "sheen_E, sheen_Eavg: charlie (Estevez-Kulla's fitted Lambda, as glTF's "
-                 "KHR_materials_sheen), ashikhmin (1/(4 (mu_i + mu_o - mu_i mu_o))) or ospray")
-      ->capture_default_str()
-      ->check(OneOf({"charlie", "ashikhmin", "ospray"}));
-  app.add_option("--sheen-alpha", alpha,
-                 "sheen_E, sheen_Eavg: the Charlie alpha from the roughness axis r "
-                 "(sheenRoughness): linear alpha = r, squared alpha = r^2 (Filament's cloth, and "
-                 "the glTF extension's sample code)")
-      ->capture_default_str()
-      ->check(OneOf({"linear", "squared"}));
+void AddModelOptions(CLI::App &app, std::map<std::string, std::string> &values,
+                     const std::vector<std::string> &only) {
+  for (const ModelOption &m : ModelOptions()) {
+    if (!only.empty() && std::find(only.begin(), only.end(), m.option) == only.end()) continue;
+    values[m.option] = m.defaultValue;
+    app.add_option("--" + m.option, values[m.option],
+                   m.meaning + (only.empty() ? "; tables " + JoinNames(m.tables) : ""))
+        ->capture_default_str()
+        ->check(OneOf(m.accepted));
+  }
 }
 
 void AddConventionOptions(CLI::App &app, std::map<std::string, std::string> &values) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "lutbake/api/eval.h"
 #include "lutbake/api/names.h"
 #include "lutbake/api/numbers.h"
 
@@ -36,11 +37,21 @@ CLI::Validator InRange(T lo, T hi, const std::string &what) {
       "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
 }
 
-// --ndf (ggx, beckmann) and --smith (correlated, separable), shared by the
-// subcommands that integrate the microfacet BRDF.
-void AddModelOptions(CLI::App &app, std::string &ndf, std::string &smith);
-// --sheen-visibility and --sheen-alpha: the model of the sheen tables.
-void AddSheenOptions(CLI::App &app, std::string &visibility, std::string &alpha);
+// The model options (eval.h's ModelOptions: --ndf, --smith, --fresnel, ...),
+// each bound to values[option], which starts at its default; help "MEANING;
+// tables T1, T2". `only` keeps just those options, their help without the
+// tables (report measures its own).
+void AddModelOptions(CLI::App &app, std::map<std::string, std::string> &values,
+                     const std::vector<std::string> &only = {});
+// The model options given on the command line (already validated) into a
+// request's models (BakeRequest, EvalRequest).
+template <typename Request>
+void ModelsOf(const std::map<std::string, std::string> &values, CLI::App &app, Request *r) {
+  std::map<std::string, std::string> given;
+  for (const auto &[option, value] : values)
+    if (app.count("--" + option) > 0) given[option] = value;
+  ModelsNamed(given).SetIn(r);
+}
 
 // The options that state a table file's convention (identify.h's
 // ConventionOptions), each bound to values[name].

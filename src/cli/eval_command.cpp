@@ -41,7 +41,7 @@ EvalRequest RequestOf(const EvalOptions &o, CLI::App &app) {
     for (const std::string &item : r.spelling[option])
       r.coordinates[option].push_back(std::strtod(item.c_str(), nullptr));
   }
-  ModelsOf(o, app, &r);
+  ModelsOf(o.models, app, &r);
   r.sampling = SamplingRequestOf(o.sampling, app);
   r.threads = o.threads;
   return r;
@@ -60,11 +60,7 @@ void SetupEvalCommand(CLI::App &app, EvalOptions &o) {
                    c.meaning + ", comma-separated; tables " + JoinNames(c.tables))
         ->type_name("LIST")
         ->check(RealList(c));
-  app.add_option("--fresnel", o.fresnel, "Favg: the Fresnel model")
-      ->capture_default_str()
-      ->check(OneOf({"schlick", "dielectric", "conductor", "f82"}));
-  AddModelOptions(app, o.ndf, o.smith);
-  AddSheenOptions(app, o.sheenVisibility, o.sheenAlpha);
+  AddModelOptions(app, o.models);
   AddSamplingOptions(app, o.sampling, "point");
   AddThreadsOption(app, o.threads);
   app.add_flag("--json", o.json,

@@ -16,11 +16,8 @@ struct EvalOptions {
   // The coordinates' comma-separated lists of points, by option name
   // ("mu", "roughness", ...: lutbake::EvalCoordinateOptions).
   std::map<std::string, std::string> coordinates;
-  std::string ndf = "ggx";
-  std::string smith = "correlated";
-  std::string fresnel = "schlick";
-  std::string sheenVisibility = "charlie";
-  std::string sheenAlpha = "linear";
+  // The model options' values, by option name ("ndf", ...: lutbake::ModelOptions).
+  std::map<std::string, std::string> models;
   SamplingOptions sampling;
   int threads = 0;
   bool json = false;

@@ -2,7 +2,6 @@
 
 #include <iostream>
 
-#include "bake_command.h"
 #include "cli_util.h"
 #include "interrupt.h"
 #include "lutbake/api/progress.h"
@@ -36,7 +35,7 @@ void SetupReportCommand(CLI::App &app, ReportOptions &o) {
                  "ltc_code's table as three.js ships it (RectAreaLightTexturesLib.js), measured "
                  "beside ltc_ggx")
       ->type_name("FILE");
-  AddModelOptions(app, o.ndf, o.smith);
+  AddModelOptions(app, o.models, {"ndf", "smith"});
   AddSeedOption(app, o.seed, "Seed of the point sets");
   AddThreadsOption(app, o.threads);
   app.add_flag("-q,--quiet", o.quiet, "No progress or summary lines (errors are still printed)");
@@ -48,8 +47,9 @@ int RunReport(const ReportOptions &o) {
   r.outputDirectory = o.outDir;
   r.tables = SplitList(o.tables);
   r.estimators = SplitList(o.estimators);
-  r.ndf = ParseNdf(o.ndf);
-  r.smith = ParseSmith(o.smith);
+  const ModelChoice models = ModelsNamed(o.models);
+  r.ndf = models.ndf;
+  r.smith = models.smith;
   r.size = o.size;
   r.budgetSeconds = o.budget;
   r.seed = o.seed;

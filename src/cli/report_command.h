@@ -2,6 +2,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <map>
 #include <string>
 
 namespace lutbake::cli {
@@ -10,8 +11,7 @@ struct ReportOptions {
   std::string outDir;
   std::string tables = "E,dfg";
   std::string estimators = "uniform,cosine,ndf,vndf-random,vndf,adaptive,quadrature";
-  std::string ndf = "ggx";
-  std::string smith = "correlated";
+  std::map<std::string, std::string> models;  // --ndf, --smith
   int size = 32;
   double budget = 60;
   uint64_t seed = 0;

@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "lutbake/core/error.h"
 
@@ -108,6 +110,77 @@ TEST(EvalApi, RefusesMoreThanAMillionPoints) {
   request.coordinates["roughness"] = std::vector<double>(1000, 0.5);
   EXPECT_EQ(UsageMessage(request),
             "1001000 points (--mu x --roughness); accepted: at most 1000000");
+}
+
+const ModelOption &ModelOptionNamed(const std::vector<ModelOption> &options,
+                                    const std::string &name) {
+  for (const ModelOption &o : options)
+    if (o.option == name) return o;
+  throw std::runtime_error("no model option " + name);
+}
+
+TEST(EvalApi, ModelOptionsCoverEveryTablesModelAndNameItsUsers) {
+  const std::vector<ModelOption> options = ModelOptions();
+  std::vector<std::string> names;
+  for (const ModelOption &o : options) names.push_back(o.option);
+  EXPECT_EQ(names, (std::vector<std::string>{"ndf", "smith", "fresnel", "sheen-visibility",
+                                             "sheen-alpha"}));
+  // Every option a table's model part takes is one of them, and lists it.
+  for (const TableDefinition *table : AllTables())
+    for (const std::string &option : table->ModelOptions()) {
+      const std::vector<std::string> &users = ModelOptionNamed(options, option).tables;
+      EXPECT_NE(std::find(users.begin(), users.end(), table->Name()), users.end())
+          << option << " does not list " << table->Name();
+    }
+  EXPECT_EQ(ModelOptionNamed(options, "fresnel").tables, std::vector<std::string>{"Favg"});
+  const std::vector<std::string> &ndfUsers = ModelOptionNamed(options, "ndf").tables;
+  EXPECT_EQ(std::count(ndfUsers.begin(), ndfUsers.end(), "sheen_E"), 0);
+  EXPECT_EQ(std::count(ndfUsers.begin(), ndfUsers.end(), "dfg"), 1);
+  const ModelOption &visibility = ModelOptionNamed(options, "sheen-visibility");
+  EXPECT_EQ(visibility.accepted, (std::vector<std::string>{"charlie", "ashikhmin", "ospray"}));
+  EXPECT_EQ(visibility.defaultValue, "charlie");
+  EXPECT_EQ(ModelOptionNamed(options, "sheen-alpha").accepted,
+            (std::vector<std::string>{"linear", "squared"}));
+}
+
+TEST(EvalApi, ModelsNamedReadsEveryAcceptedValueBack) {
+  for (const ModelOption &o : ModelOptions())
+    for (const std::string &value : o.accepted) {
+      const ModelChoice c = ModelsNamed({{o.option, value}});
+      // Exactly the one field is set, to the model of that name.
+      const int set = c.ndf.has_value() + c.smith.has_value() + c.fresnel.has_value() +
+                      c.sheenVisibility.has_value() + c.sheenAlpha.has_value();
+      EXPECT_EQ(set, 1) << o.option << " " << value;
+      const std::string read = c.ndf               ? std::string(ToString(*c.ndf))
+                               : c.smith           ? std::string(ToString(*c.smith))
+                               : c.fresnel         ? std::string(ToString(*c.fresnel))
+                               : c.sheenVisibility ? std::string(ToString(*c.sheenVisibility))
+                               : c.sheenAlpha      ? std::string(ToString(*c.sheenAlpha))
+                                                   : "";
+      EXPECT_EQ(read, value) << o.option;
+    }
+  // A model chosen this way reaches the evaluation: Beckmann's E differs from GGX's.
+  EvalRequest request;
+  request.table = "E";
+  request.coordinates = {{"mu", {0.5}}, {"roughness", {0.5}}};
+  const double ggx = Evaluate(request).points[0].values[0];
+  ModelsNamed({{"ndf", "beckmann"}}).SetIn(&request);
+  EXPECT_GT(std::abs(Evaluate(request).points[0].values[0] - ggx), 1e-4);
+}
+
+TEST(EvalApi, ModelsNamedRefusesUnknownOptionsAndValues) {
+  const auto message = [](const std::map<std::string, std::string> &values) -> std::string {
+    try {
+      ModelsNamed(values);
+    } catch (const UsageError &e) {
+      return e.what();
+    }
+    return "(no UsageError)";
+  };
+  EXPECT_EQ(message({{"ndf", "GGX"}}), "--ndf: 'GGX' is not accepted; accepted: ggx, beckmann");
+  EXPECT_EQ(message({{"nfd", "ggx"}}),
+            "--nfd is not a model option; accepted: ndf, smith, fresnel, sheen-visibility, "
+            "sheen-alpha");
 }
 
 }  // namespace

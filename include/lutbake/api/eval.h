@@ -68,6 +68,43 @@ struct EvalCoordinateOption {
 };
 std::vector<EvalCoordinateOption> EvalCoordinateOptions();
 
+// One model option of bake and eval (--ndf, --smith, --fresnel,
+// --sheen-visibility, --sheen-alpha): what it chooses, the values it
+// accepts (the models' own names: ToString of each), its default (that of
+// a request that leaves it unset: BakeSettings'), and the tables whose model
+// it chooses (each definition's ModelOptions(), in registry order). The
+// command line's options and help are these.
+struct ModelOption {
+  std::string option;                 // "ndf"
+  std::string meaning;                // "Microfacet distribution"
+  std::vector<std::string> accepted;  // "ggx", "beckmann"
+  std::string defaultValue;           // "ggx"
+  std::vector<std::string> tables;    // "E", "Eavg", "dfg", ...
+};
+std::vector<ModelOption> ModelOptions();
+
+// The models that option values choose; an option not given stays unset.
+struct ModelChoice {
+  std::optional<NdfKind> ndf;
+  std::optional<SmithForm> smith;
+  std::optional<FresnelModel> fresnel;
+  std::optional<SheenVisibility> sheenVisibility;
+  std::optional<SheenAlpha> sheenAlpha;
+  // Sets a request's models (BakeRequest, EvalRequest) to these.
+  template <typename Request>
+  void SetIn(Request *request) const {
+    request->ndf = ndf;
+    request->smith = smith;
+    request->fresnel = fresnel;
+    request->sheenVisibility = sheenVisibility;
+    request->sheenAlpha = sheenAlpha;
+  }
+};
+// `values`: option -> value, as ModelOptions spells them ({"ndf",
+// "beckmann"}). Throws UsageError for an option or a value it does not
+// accept.
+ModelChoice ModelsNamed(const std::map<std::string, std::string> &values);
+
 struct EvalPoint {
   std::vector<double> coordinates;     // in EvalResult::coordinateNames' order
   std::vector<double> values, errors;  // per channel

@@ -31,6 +31,10 @@
 namespace lutbake {
 
 enum class FresnelModel { kSchlick, kDielectric, kConductor, kF82 };
+// Every model, in the order the command line offers them.
+inline constexpr FresnelModel kAllFresnelModels[] = {FresnelModel::kSchlick,
+                                                     FresnelModel::kDielectric,
+                                                     FresnelModel::kConductor, FresnelModel::kF82};
 
 std::string_view ToString(FresnelModel model);
 

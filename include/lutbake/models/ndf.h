@@ -9,6 +9,8 @@
 namespace lutbake {
 
 enum class NdfKind { kGgx, kBeckmann };
+// Every kind, in the order the command line offers them.
+inline constexpr NdfKind kAllNdfKinds[] = {NdfKind::kGgx, NdfKind::kBeckmann};
 
 std::string_view ToString(NdfKind kind);
 

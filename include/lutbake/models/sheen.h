@@ -38,6 +38,9 @@ namespace lutbake {
 // variant of it (the light's Lambda softened, SheenDistribution.ih
 // evalLambdaI), or Ashikhmin's closed form.
 enum class SheenVisibility { kCharlie, kAshikhmin, kOspray };
+// Every form, in the order the command line offers them.
+inline constexpr SheenVisibility kAllSheenVisibilities[] = {
+    SheenVisibility::kCharlie, SheenVisibility::kAshikhmin, SheenVisibility::kOspray};
 
 // "charlie", "ashikhmin", "ospray".
 std::string_view ToString(SheenVisibility visibility);

@@ -11,6 +11,8 @@
 namespace lutbake {
 
 enum class SmithForm { kCorrelated, kSeparable };
+// Every form, in the order the command line offers them.
+inline constexpr SmithForm kAllSmithForms[] = {SmithForm::kCorrelated, SmithForm::kSeparable};
 
 std::string_view ToString(SmithForm form);
 

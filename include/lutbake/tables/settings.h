@@ -95,6 +95,8 @@ inline constexpr double kQuadratureDefaultTolerance = 1e-12;
 // axis (glTF's sheenRoughness) takes either (BakeSettings::sheenAlpha); an
 // engine preset states its own for each lobe (presets/preset.h, PresetModel).
 enum class AlphaMapping { kLinear, kSquared };
+// Every mapping, in the order the command line offers them.
+inline constexpr AlphaMapping kAllAlphaMappings[] = {AlphaMapping::kLinear, AlphaMapping::kSquared};
 // The sheen tables' option by its older name.
 using SheenAlpha = AlphaMapping;
 constexpr double AlphaFromRoughness(AlphaMapping mapping, double r) {
