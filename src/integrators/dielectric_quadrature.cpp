@@ -334,14 +334,8 @@ struct NodeBatch {
     double *at = v.data() + n, *rj = ruleJac.data() + n;
     const double len = p.b - p.a;
     if (p.square == 2 || p.square == -2) {
-      // MapNode's square-root map with its two roots taken once per panel.
-      const double sa = std::sqrt(std::abs(p.a - p.root)), sb = std::sqrt(std::abs(p.b - p.root));
-      const double ds = sb - sa, absDs = std::abs(ds);
-      for (size_t j = 0; j < m; ++j) {
-        const double t = sa + ds * rule.x[j];
-        at[j] = p.square == 2 ? p.root + t * t : p.root - t * t;
-        rj[j] = rule.w[j] * (2.0 * t * absDs);
-      }
+      const graded::RootMap map(p);
+      for (size_t j = 0; j < m; ++j) rj[j] = rule.w[j] * map.Node(rule.x[j], &at[j]);
     } else if (p.square > 0) {
       for (size_t j = 0; j < m; ++j) {
         const double u = rule.x[j];

@@ -69,15 +69,29 @@ void GradeToward(double a, double b, double delta, bool towardA, std::vector<Pan
 void BuildPanels(const std::vector<Point> &points, double maxLength, double nearSingular,
                  std::vector<Panel> *out);
 
+// The square-root map of a panel with square = +-2, its two roots taken
+// once (a rule's nodes on one panel share them): Node(u, &v) sets v and
+// returns dv/du.
+struct RootMap {
+  explicit RootMap(const Panel &p)
+      : root(p.root),
+        sa(std::sqrt(std::abs(p.a - p.root))),
+        ds(std::sqrt(std::abs(p.b - p.root)) - sa),
+        absDs(std::abs(ds)),
+        above(p.square == 2) {}
+  double Node(double u, double *v) const {
+    const double t = sa + ds * u;
+    *v = above ? root + t * t : root - t * t;
+    return 2.0 * t * absDs;
+  }
+  double root, sa, ds, absDs;
+  bool above;  // square = 2: the root lies below the panel
+};
+
 // The node of a panel at u in [0, 1]; returns dv/du.
 inline double MapNode(const Panel &p, double u, double *v) {
   const double len = p.b - p.a;
-  if (p.square == 2 || p.square == -2) {
-    const double sa = std::sqrt(std::abs(p.a - p.root)), sb = std::sqrt(std::abs(p.b - p.root));
-    const double t = sa + (sb - sa) * u;
-    *v = p.square == 2 ? p.root + t * t : p.root - t * t;
-    return 2.0 * t * std::abs(sb - sa);
-  }
+  if (p.square == 2 || p.square == -2) return RootMap(p).Node(u, v);
   if (p.square > 0) {
     *v = p.a + len * u * u;
     return 2.0 * len * u;
