@@ -68,14 +68,14 @@ struct LambdaFit {
     e = Mix(-4.32054, -4.85967, w);
   }
   double L(double x) const { return a / (1.0 + b * std::pow(x, c)) + d * x + e; }
+  // log Lambda at x = mu in [0, 1]: l(x) below 1/2, 2 l(1/2) - l(1 - x) above.
+  double LogLambda(double x) const { return x < 0.5 ? L(x) : 2.0 * L(0.5) - L(1.0 - x); }
 };
 
 }  // namespace
 
 double CharlieLambda(double mu, double alpha) {
-  const LambdaFit fit(alpha);
-  const double x = Clamp(mu, 0.0, 1.0);
-  return x < 0.5 ? std::exp(fit.L(x)) : std::exp(2.0 * fit.L(0.5) - fit.L(1.0 - x));
+  return std::exp(LambdaFit(alpha).LogLambda(Clamp(mu, 0.0, 1.0)));
 }
 
 double CharlieLambdaExponent(double alpha) { return LambdaFit(alpha).c; }
@@ -86,11 +86,9 @@ bool UsesCharlieLambda(SheenVisibility visibility) {
 
 double SheenLightLambda(SheenVisibility visibility, double mu_i, double alpha) {
   if (visibility != SheenVisibility::kOspray) return CharlieLambda(mu_i, alpha);
-  const LambdaFit fit(alpha);
   const double x = Clamp(mu_i, 0.0, 1.0);
-  const double l = x < 0.5 ? fit.L(x) : 2.0 * fit.L(0.5) - fit.L(1.0 - x);
   const double t = Sqr(Sqr(Sqr(1.0 - x)));  // (1 - mu_i)^8
-  return std::exp((1.0 + 2.0 * t) * l);
+  return std::exp((1.0 + 2.0 * t) * LambdaFit(alpha).LogLambda(x));
 }
 
 double SheenCosineVisibility(SheenVisibility visibility, double alpha, double mu_o, double mu_i) {
