@@ -105,14 +105,21 @@ struct PanelList {
   std::vector<double> from, width, sc, scale;
   size_t n = 0;
   void Clear() { n = 0; }
+  // Room for `more` panels past n.
+  void Reserve(size_t more) {
+    if (n + more <= from.size()) return;
+    const size_t size = 2 * (n + more) + 64;
+    from.resize(size);
+    width.resize(size);
+    sc.resize(size);
+    scale.resize(size);
+  }
   void Push(double lo, double hi, double sci, double outerWeight) {
-    if (n == from.size()) {
-      const size_t size = 2 * n + 64;
-      from.resize(size);
-      width.resize(size);
-      sc.resize(size);
-      scale.resize(size);
-    }
+    Reserve(1);
+    PushReserved(lo, hi, sci, outerWeight);
+  }
+  // Push after Reserve.
+  void PushReserved(double lo, double hi, double sci, double outerWeight) {
     from[n] = lo;
     width[n] = hi - lo;
     sc[n] = sci;
@@ -130,10 +137,22 @@ struct OuterNodes {
   std::vector<double> cosPhi, weight;
 };
 
+// What the horizon is at each azimuth of one level for one mu_o, whatever
+// alpha: sc = s_o cos(phi), T_max (the horizon, infinite at mu_o = 0 toward
+// the view, <= 0 where no light is above it), |dmu_i/dT| at T_max and
+// |sc| T_max + mu_o (the numerator of InnerPanels' bound M). Kept beside
+// the outer nodes, so a column of a table computes them once per level.
+struct HorizonNodes {
+  double mu_o = -1.0;
+  const OuterNodes *nodes = nullptr;
+  std::vector<double> sc, T_max, slope, boundNumerator;
+};
+
 struct Scratch {
   PanelList core, tail;
   PanelList graded;  // Beckmann's horizon grading before its panels are cut
   OuterNodes outer[kQuadratureLevels];
+  HorizonNodes horizon[kQuadratureLevels];
 };
 
 Scratch &ThreadScratch() {
@@ -188,16 +207,23 @@ void PushGraded(double lo, double hi, double first, bool towardHi, double maxLen
     if (cuts > 1 && length - cut[cuts - 1] < 0.5 * (cut[cuts - 1] - cut[cuts - 2])) --cuts;
   }
   cut[cuts++] = length;
+  // Each of the cuts - 1 pieces is split into at most its length / maxLength
+  // + 1 parts (+ 1 for the rounding of that quotient).
+  list->Reserve(static_cast<size_t>(cuts) + static_cast<size_t>(std::ceil(length / maxLength)) + 2);
   double from = lo;
   for (int k = 1; k < cuts; ++k) {
     const double to = k == cuts - 1 ? hi : towardHi ? hi - cut[cuts - 1 - k] : lo + cut[k];
-    const int parts =
-        to - from > maxLength ? static_cast<int>(std::ceil((to - from) / maxLength)) : 1;
+    if (!(to - from > maxLength)) {
+      list->PushReserved(from, to, sc, outerWeight);
+      from = to;
+      continue;
+    }
+    const int parts = static_cast<int>(std::ceil((to - from) / maxLength));
     for (int p = 1; p < parts; ++p) {
       const double at = from + (to - from) * p / parts;
-      list->Push(from + (to - from) * (p - 1) / parts, at, sc, outerWeight);
+      list->PushReserved(from + (to - from) * (p - 1) / parts, at, sc, outerWeight);
     }
-    list->Push(parts > 1 ? from + (to - from) * (parts - 1) / parts : from, to, sc, outerWeight);
+    list->PushReserved(from + (to - from) * (parts - 1) / parts, to, sc, outerWeight);
     from = to;
   }
 }
@@ -208,21 +234,44 @@ double HorizonSlope(double sc, double mu_o, double T) {
   return (2.0 * sc * (1.0 - T * T) - 4.0 * mu_o * T) / (d * d);
 }
 
-// The inner panels of one azimuth (sc = s_o cos(phi)).
-void InnerPanels(const Setup &t, double sc, double outerWeight, Scratch *s) {
+// The horizon at every outer node of `level` for the setup's mu_o.
+const HorizonNodes &Horizon(const Setup &t, const OuterNodes &outer, int level, Scratch *s) {
+  HorizonNodes &h = s->horizon[level];
+  if (h.mu_o == t.mu_o && h.nodes == &outer && h.sc.size() == outer.cosPhi.size()) return h;
+  const double mu_o = t.mu_o;
+  const size_t n = outer.cosPhi.size();
+  h.mu_o = mu_o;
+  h.nodes = &outer;
+  h.sc.resize(n);
+  h.T_max.resize(n);
+  h.slope.resize(n);
+  h.boundNumerator.resize(n);
+  for (size_t j = 0; j < n; ++j) {
+    const double sc = t.s_o * outer.cosPhi[j];
+    // T_max, the positive root of mu_o T^2 - 2 sc T - mu_o, in the form that
+    // does not cancel: (sc + R) / mu_o for sc >= 0, mu_o / (R - sc) otherwise.
+    const double R = std::sqrt(sc * sc + mu_o * mu_o);
+    const double T_max =
+        sc >= 0.0 ? (mu_o > 0.0 ? (sc + R) / mu_o : std::numeric_limits<double>::infinity())
+                  : mu_o / (R - sc);
+    h.sc[j] = sc;
+    h.T_max[j] = T_max;
+    h.slope[j] = std::isfinite(T_max) ? std::abs(HorizonSlope(sc, mu_o, T_max)) : 0.0;
+    h.boundNumerator[j] = std::abs(sc) * T_max + mu_o;
+  }
+  return h;
+}
+
+// The inner panels of azimuth j of the horizon nodes `h`.
+void InnerPanels(const Setup &t, const HorizonNodes &h, size_t j, double outerWeight, Scratch *s) {
   const double mu_o = t.mu_o, alpha = t.ndf.alpha;
-  // T_max, the positive root of mu_o T^2 - 2 sc T - mu_o, in the form that
-  // does not cancel: (sc + R) / mu_o for sc >= 0, mu_o / (R - sc) otherwise.
-  const double R = std::sqrt(sc * sc + mu_o * mu_o);
-  const double T_max =
-      sc >= 0.0 ? (mu_o > 0.0 ? (sc + R) / mu_o : std::numeric_limits<double>::infinity())
-                : mu_o / (R - sc);
+  const double sc = h.sc[j], T_max = h.T_max[j];
   if (!(T_max > 0.0)) return;  // no light above the horizon
   const bool bounded = std::isfinite(T_max);
   // A bound of the E integrand near the horizon in the measure dxi:
   // (o.h / cos(theta)) G2 / mu_o <= (|sc| T_max + mu_o) / (mu_o + L_o).
-  const double M = (std::abs(sc) * T_max + mu_o) / (mu_o + t.L_o);
-  const double slope = bounded ? std::abs(HorizonSlope(sc, mu_o, T_max)) : 0.0;
+  const double M = h.boundNumerator[j] / (mu_o + t.L_o);
+  const double slope = h.slope[j];
   const double tMax = T_max / alpha;
   // The whole inner integral is at most M xi(T_max) (the NDF's mass below
   // the horizon times the bound above; the bound is largest at T_max). An
@@ -254,9 +303,12 @@ void InnerPanels(const Setup &t, double sc, double outerWeight, Scratch *s) {
     double first;
     if (bounded) {
       const double wMin = alpha / T_max, share = t.negligibleMass / M;
-      first =
-          FirstPanel(std::min(t.d_mu * alpha / (slope * T_max * T_max), std::hypot(wMin, alpha)),
-                     share / (wMin + std::sqrt(wMin * wMin + share)));
+      // hypot(w_min, alpha) >= alpha: it is needed only where G2's
+      // distance is not below alpha.
+      const double g2Distance = t.d_mu * alpha / (slope * T_max * T_max);
+      first = FirstPanel(
+          g2Distance < alpha ? g2Distance : std::min(g2Distance, std::hypot(wMin, alpha)),
+          share / (wMin + std::sqrt(wMin * wMin + share)));
       PushGraded(wMin, 1.0, first, false, kMaxGgxPanel, sc, outerWeight, &s->tail);
       return;
     }
@@ -329,8 +381,8 @@ Sums EvaluateLevel(const Setup &t, int level, bool f82 = false) {
   s.core.Clear();
   s.tail.Clear();
   const OuterNodes &outer = Outer(t.a, t.mu_o == 0.0, level, &s);
-  for (size_t j = 0; j < outer.cosPhi.size(); ++j)
-    InnerPanels(t, t.s_o * outer.cosPhi[j], outer.weight[j], &s);
+  const HorizonNodes &horizon = Horizon(t, outer, level, &s);
+  for (size_t j = 0; j < outer.cosPhi.size(); ++j) InnerPanels(t, horizon, j, outer.weight[j], &s);
   const GaussLegendreRule &inner = GaussLegendre(kLevels[level].inner);
   double core[3] = {0.0, 0.0, 0.0}, tail[3] = {0.0, 0.0, 0.0};
   if (t.ndf.kind == NdfKind::kGgx) {
