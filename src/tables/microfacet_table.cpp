@@ -196,7 +196,12 @@ PointValue EvaluateAlbedo(const TableDefinition &table, const BakeSettings &s, d
   if (!(mu_o >= 0.0 && mu_o <= 1.0))
     throw std::domain_error("mu " + FormatDouble(mu_o) + " is outside [0, 1]");
   const Ndf ndf{s.ndf, alpha};
-  const bool split = table.Channels() == 2;
+  // Channels() builds the channel names: once per table and thread, not
+  // per texel.
+  thread_local const TableDefinition *channelsOf = nullptr;
+  thread_local bool splitOf = false;
+  if (channelsOf != &table) splitOf = table.Channels() == 2, channelsOf = &table;
+  const bool split = splitOf;
   if (alpha == 0.0) return MirrorAlbedo(split, mu_o);
   if (s.estimator == Estimator::kQuadrature) return PanelAlbedo(split, s, ndf, mu_o);
   if (s.estimator == Estimator::kAdaptiveQuadrature) return AdaptiveAlbedo(split, s, ndf, mu_o);
