@@ -280,6 +280,8 @@ BakeJob LoopJobOf(const TableJob &job, const std::vector<const TableFormat *> &f
   for (const TableFormat *format : formats)
     loopJob.files.push_back({job.name + format->extension, format});
   loopJob.metadata = job.metadata;
+  loopJob.texels = static_cast<size_t>(job.x.count) * static_cast<size_t>(job.y.count) *
+                   static_cast<size_t>(job.z.count);
   loopJob.errorMap = errorMap;
   if (shapes)
     loopJob.written = [shapes](const Table &table, const BakedTable &) {

@@ -26,6 +26,9 @@ struct BakeJob {
   // nobody listens) and what it cost to `stats` (a maker that measures only
   // time fills stats->seconds).
   std::function<Table(const ProgressFn &progress, BakeStats *stats)> make;
+  // The texels it will hold, where known (0: not known). Jobs that are all
+  // known and together hold at most kTexelsMadeTogether are made at once.
+  size_t texels = 0;
   // The files it is written in, each with its format.
   struct File {
     std::string name;
@@ -43,8 +46,13 @@ struct BakeJob {
   std::function<void(const Table &table, const BakedTable &baked)> written;
 };
 
-// Bakes `jobs` in order, each written through `output` as soon as it is
-// made (a fitted table's fit maps, NAME.fit.exr, besides its files):
+// Jobs of at most this many texels in all are made at once (values and
+// bounds: 16 bytes per texel and channel, at most 64 MiB for 4 channels).
+inline constexpr size_t kTexelsMadeTogether = size_t{1} << 20;
+
+// Bakes `jobs` in order, each written through `output` once it is made
+// (a fitted table's fit maps, NAME.fit.exr, besides its files; jobs that
+// hold few texels together are all made first, at once):
 // progress, cancellation between the steps and tableDone from `request`,
 // each file and table recorded in `result`. Returns "NAME (N texels)" for
 // each table whose sampled texels missed the tolerance (the caller decides
