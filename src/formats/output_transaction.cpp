@@ -1,5 +1,6 @@
 #include "lutbake/formats/output_transaction.h"
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <signal.h>
 #include <stdio.h>  // renameat2
@@ -144,13 +145,21 @@ void RetireSibling(const fs::path &sibling, const fs::path &directory) {
 // a living owner) can be taken.
 void RetireStaleSiblings(const fs::path &directory) {
   const std::string prefix = SiblingPrefix(directory);
-  std::error_code ec;
-  for (const auto &entry : fs::directory_iterator(directory.parent_path(), ec)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind(prefix, 0) != 0 || !entry.is_directory(ec)) continue;
-    const int fd = ::open(entry.path().c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  const fs::path parent = directory.parent_path();
+  // The names alone, compared before any path is made: the parent may be a
+  // /tmp of thousands of entries, of which a sibling is rarely one.
+  std::vector<fs::path> siblings;
+  if (DIR *listing = ::opendir(parent.c_str())) {
+    while (const dirent *entry = ::readdir(listing))
+      if (std::strncmp(entry->d_name, prefix.c_str(), prefix.size()) == 0)
+        siblings.push_back(parent / entry->d_name);
+    ::closedir(listing);
+  }
+  for (const fs::path &sibling : siblings) {
+    // O_DIRECTORY: a sibling is a directory; anything else of that name is not ours.
+    const int fd = ::open(sibling.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (fd < 0) continue;
-    if (::flock(fd, LOCK_EX | LOCK_NB) == 0) RetireSibling(entry.path(), directory);
+    if (::flock(fd, LOCK_EX | LOCK_NB) == 0) RetireSibling(sibling, directory);
     ::close(fd);
   }
 }
