@@ -4,6 +4,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <map>
 #include <memory>
 #include <utility>
 
@@ -66,10 +67,19 @@ struct JobRunner {
         file.format->makeWriter()->Write(table, temporary, writeOptions);
       });
     const std::vector<std::string> paths = output.WriteEach(writes);
+    // Once per storage type (a table's exr, bin and header all state the
+    // float32 bounds).
+    std::map<ValueType, BoundSummary> summaries;
+    const auto summaryOf = [&](ValueType type) -> const BoundSummary & {
+      auto found = summaries.find(type);
+      if (found == summaries.end())
+        found = summaries.emplace(type, SummarizeStoredBounds(table, type)).first;
+      return found->second;
+    };
     std::vector<BoundSummary> fileBounds;
     for (size_t k = 0; k < job.files.size(); ++k) {
       const TableFormat &format = *job.files[k].format;
-      fileBounds.push_back(SummarizeStoredBounds(table, format.storage(writeOptions)));
+      fileBounds.push_back(summaryOf(format.storage(writeOptions)));
       result.files.push_back(
           {paths[k], job.name, format.name, fileBounds.back().max, fileBounds.back().rms});
       baked.files.push_back(paths[k]);
@@ -84,7 +94,7 @@ struct JobRunner {
       baked.storage = ToString(job.files[0].format->storage(writeOptions));
     } else {
       // The bound as the float32 files state it (rounding included).
-      stated = SummarizeStoredBounds(table, ValueType::kFloat32);
+      stated = summaryOf(ValueType::kFloat32);
     }
     baked.name = job.name;
     baked.width = table.width();
