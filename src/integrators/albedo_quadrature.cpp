@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -129,30 +131,26 @@ struct PanelList {
   kernel::Panels View() const { return {from.data(), width.data(), sc.data(), scale.data(), n}; }
 };
 
-// The outer nodes of one level at one outer scale a: cos(phi) and the weight
-// dphi / pi. They depend on mu_o only, so a thread that works down a column
-// of a table computes them once.
-struct OuterNodes {
-  double a = -1.0;
-  std::vector<double> cosPhi, weight;
-};
-
-// What the horizon is at each azimuth of one level for one mu_o, whatever
-// alpha: sc = s_o cos(phi), T_max (the horizon, infinite at mu_o = 0 toward
-// the view, <= 0 where no light is above it), |dmu_i/dT| at T_max and
-// |sc| T_max + mu_o (the numerator of InnerPanels' bound M). Kept beside
-// the outer nodes, so a column of a table computes them once per level.
-struct HorizonNodes {
+// What every texel of one column (one mu_o) shares at one level, whatever
+// alpha: the outer nodes, cos(phi) and the weight dphi / pi, and the horizon
+// at each: sc = s_o cos(phi), T_max (infinite at mu_o = 0 toward the view,
+// <= 0 where no light is above the horizon), |dmu_i/dT| at T_max and
+// |sc| T_max + mu_o (the numerator of InnerPanels' bound M).
+struct ColumnNodes {
   double mu_o = -1.0;
-  const OuterNodes *nodes = nullptr;
+  std::vector<double> cosPhi, weight;
   std::vector<double> sc, T_max, slope, boundNumerator;
 };
+
+// Each thread keeps the columns it met last in this many slots a level,
+// placed by mu_o: a table's thread works down a column, and E_avg meets the
+// same mu nodes again for every roughness of its graded rule.
+constexpr size_t kColumnSlots = 256;
 
 struct Scratch {
   PanelList core, tail;
   PanelList graded;  // Beckmann's horizon grading before its panels are cut
-  OuterNodes outer[kQuadratureLevels];
-  HorizonNodes horizon[kQuadratureLevels];
+  std::vector<ColumnNodes> columns[kQuadratureLevels];
 };
 
 Scratch &ThreadScratch() {
@@ -160,15 +158,28 @@ Scratch &ThreadScratch() {
   return scratch;
 }
 
-const OuterNodes &Outer(double a, bool grazing, int level, Scratch *s) {
-  OuterNodes &o = s->outer[level];
-  const double key = grazing ? -2.0 : a;  // grazing: phi in [0, pi/2] only
-  if (o.a == key) return o;
-  o.a = key;
-  o.cosPhi.clear();
-  o.weight.clear();
+// dmu_i / dT at T: (2 sc (1 - T^2) - 4 mu_o T) / (1 + T^2)^2.
+double HorizonSlope(double sc, double mu_o, double T) {
+  const double d = 1.0 + T * T;
+  return (2.0 * sc * (1.0 - T * T) - 4.0 * mu_o * T) / (d * d);
+}
+
+// The column of the setup's mu_o at `level`: from the thread's slots, or
+// computed there.
+const ColumnNodes &Column(const Setup &t, int level, Scratch *s) {
+  std::vector<ColumnNodes> &slots = s->columns[level];
+  if (slots.empty()) slots.resize(kColumnSlots);
+  uint64_t bits;
+  std::memcpy(&bits, &t.mu_o, sizeof bits);
+  ColumnNodes &c = slots[(bits * 0x9e3779b97f4a7c15ull) >> 56];  // 256 slots
+  if (c.mu_o == t.mu_o) return c;
+  c.mu_o = t.mu_o;
+  c.cosPhi.clear();
+  c.weight.clear();
+  // At mu_o = 0 (grazing) phi in [0, pi/2] only.
+  const bool grazing = t.mu_o == 0.0;
   const GaussLegendreRule &rule = GaussLegendre(kLevels[level].outer);
-  const double scale = grazing ? kGrazingLimitScale : a;
+  const double scale = grazing ? kGrazingLimitScale : t.a;
   const double U = std::asinh(0.5 * kPi / scale);
   const int panels = std::max(1, static_cast<int>(std::ceil(U / kOuterPanelWidth)));
   const double width = U / panels;
@@ -179,11 +190,30 @@ const OuterNodes &Outer(double a, bool grazing, int level, Scratch *s) {
         const double u = width * (p + rule.x[j]);
         // cos(phi) = sin(pi/2 - phi) = -side sin(a sinh(u)), accurate near pi/2.
         const double offset = std::min(scale * std::sinh(u), 0.5 * kPi);
-        o.cosPhi.push_back(-side * std::sin(offset));
+        c.cosPhi.push_back(-side * std::sin(offset));
         // dphi / pi = a cosh(u) du / pi.
-        o.weight.push_back(scale * std::cosh(u) * width * rule.w[j] * kInvPi);
+        c.weight.push_back(scale * std::cosh(u) * width * rule.w[j] * kInvPi);
       }
-  return o;
+  const double mu_o = t.mu_o;
+  const size_t n = c.cosPhi.size();
+  c.sc.resize(n);
+  c.T_max.resize(n);
+  c.slope.resize(n);
+  c.boundNumerator.resize(n);
+  for (size_t j = 0; j < n; ++j) {
+    const double sc = t.s_o * c.cosPhi[j];
+    // T_max, the positive root of mu_o T^2 - 2 sc T - mu_o, in the form that
+    // does not cancel: (sc + R) / mu_o for sc >= 0, mu_o / (R - sc) otherwise.
+    const double R = std::sqrt(sc * sc + mu_o * mu_o);
+    const double T_max =
+        sc >= 0.0 ? (mu_o > 0.0 ? (sc + R) / mu_o : std::numeric_limits<double>::infinity())
+                  : mu_o / (R - sc);
+    c.sc[j] = sc;
+    c.T_max[j] = T_max;
+    c.slope[j] = std::isfinite(T_max) ? std::abs(HorizonSlope(sc, mu_o, T_max)) : 0.0;
+    c.boundNumerator[j] = std::abs(sc) * T_max + mu_o;
+  }
+  return c;
 }
 
 // Pushes the panels of [lo, hi] graded toward hi (towardHi) or lo: lengths
@@ -228,42 +258,8 @@ void PushGraded(double lo, double hi, double first, bool towardHi, double maxLen
   }
 }
 
-// dmu_i / dT at T: (2 sc (1 - T^2) - 4 mu_o T) / (1 + T^2)^2.
-double HorizonSlope(double sc, double mu_o, double T) {
-  const double d = 1.0 + T * T;
-  return (2.0 * sc * (1.0 - T * T) - 4.0 * mu_o * T) / (d * d);
-}
-
-// The horizon at every outer node of `level` for the setup's mu_o.
-const HorizonNodes &Horizon(const Setup &t, const OuterNodes &outer, int level, Scratch *s) {
-  HorizonNodes &h = s->horizon[level];
-  if (h.mu_o == t.mu_o && h.nodes == &outer && h.sc.size() == outer.cosPhi.size()) return h;
-  const double mu_o = t.mu_o;
-  const size_t n = outer.cosPhi.size();
-  h.mu_o = mu_o;
-  h.nodes = &outer;
-  h.sc.resize(n);
-  h.T_max.resize(n);
-  h.slope.resize(n);
-  h.boundNumerator.resize(n);
-  for (size_t j = 0; j < n; ++j) {
-    const double sc = t.s_o * outer.cosPhi[j];
-    // T_max, the positive root of mu_o T^2 - 2 sc T - mu_o, in the form that
-    // does not cancel: (sc + R) / mu_o for sc >= 0, mu_o / (R - sc) otherwise.
-    const double R = std::sqrt(sc * sc + mu_o * mu_o);
-    const double T_max =
-        sc >= 0.0 ? (mu_o > 0.0 ? (sc + R) / mu_o : std::numeric_limits<double>::infinity())
-                  : mu_o / (R - sc);
-    h.sc[j] = sc;
-    h.T_max[j] = T_max;
-    h.slope[j] = std::isfinite(T_max) ? std::abs(HorizonSlope(sc, mu_o, T_max)) : 0.0;
-    h.boundNumerator[j] = std::abs(sc) * T_max + mu_o;
-  }
-  return h;
-}
-
-// The inner panels of azimuth j of the horizon nodes `h`.
-void InnerPanels(const Setup &t, const HorizonNodes &h, size_t j, double outerWeight, Scratch *s) {
+// The inner panels of azimuth j of the column `h`.
+void InnerPanels(const Setup &t, const ColumnNodes &h, size_t j, double outerWeight, Scratch *s) {
   const double mu_o = t.mu_o, alpha = t.ndf.alpha;
   const double sc = h.sc[j], T_max = h.T_max[j];
   if (!(T_max > 0.0)) return;  // no light above the horizon
@@ -380,9 +376,8 @@ Sums EvaluateLevel(const Setup &t, int level, bool f82 = false) {
   Scratch &s = ThreadScratch();
   s.core.Clear();
   s.tail.Clear();
-  const OuterNodes &outer = Outer(t.a, t.mu_o == 0.0, level, &s);
-  const HorizonNodes &horizon = Horizon(t, outer, level, &s);
-  for (size_t j = 0; j < outer.cosPhi.size(); ++j) InnerPanels(t, horizon, j, outer.weight[j], &s);
+  const ColumnNodes &column = Column(t, level, &s);
+  for (size_t j = 0; j < column.cosPhi.size(); ++j) InnerPanels(t, column, j, column.weight[j], &s);
   const GaussLegendreRule &inner = GaussLegendre(kLevels[level].inner);
   double core[3] = {0.0, 0.0, 0.0}, tail[3] = {0.0, 0.0, 0.0};
   if (t.ndf.kind == NdfKind::kGgx) {
