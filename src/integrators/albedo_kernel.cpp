@@ -7,6 +7,8 @@
 #include <hwy/foreach_target.h>  // must come before highway.h
 #include <hwy/highway.h>
 
+#include <limits>
+
 HWY_BEFORE_NAMESPACE();
 namespace lutbake::kernel {
 namespace HWY_NAMESPACE {
@@ -160,6 +162,67 @@ void SumGgxSplitSumF82Impl(const GgxSplitSumConstants &k, bool tail, int ruleNod
   SumGgxSplitSumLoop<true>(k, tail, ruleNodes, ruleX, ruleW, panels, sums);
 }
 
+// FirstPanel (albedo_quadrature.cpp): !(distance > 0) -> 0, then
+// std::max(distance, lengthForMass).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V FirstPanelLanes(D d, V distance, V lengthForMass) {
+  const V positive = hn::IfThenElseZero(hn::Gt(distance, hn::Zero(d)), distance);
+  return hn::IfThenElse(hn::Lt(positive, lengthForMass), lengthForMass, positive);
+}
+
+void GgxAzimuthSetupImpl(const GgxAzimuthConstants &k, size_t n, const double *sc,
+                         const double *T_max, const double *slope, const double *boundNumerator,
+                         int *kind, double *first, double *end, double *g2, double *lengthForMass) {
+  const hn::CappedTag<double, 8> d;
+  using V = hn::Vec<decltype(d)>;
+  const size_t lanes = hn::Lanes(d);
+  const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0);
+  const V alpha = hn::Set(d, k.alpha), muL_o = hn::Set(d, k.muL_o), d_mu = hn::Set(d, k.d_mu);
+  const V negligible = hn::Set(d, k.negligibleMass);
+  const V d_muAlpha = hn::Set(d, k.d_mu * k.alpha);
+  const V infinity = hn::Set(d, std::numeric_limits<double>::infinity());
+  for (size_t i = 0; i < n; i += lanes) {
+    const V vsc = hn::LoadU(d, sc + i), Tm = hn::LoadU(d, T_max + i);
+    const V vslope = hn::LoadU(d, slope + i), numerator = hn::LoadU(d, boundNumerator + i);
+    const auto valid = hn::Gt(Tm, zero);
+    const auto bounded = hn::Lt(Tm, infinity);
+    const V M = hn::Div(numerator, muL_o);
+    const V tMax = hn::Div(Tm, alpha);
+    const V t2 = hn::Mul(tMax, tMax);
+    const V xiMax = hn::Div(t2, hn::Add(one, t2));
+    const auto left = hn::And(bounded, hn::Le(hn::Mul(M, xiMax), negligible));
+    const auto live = hn::AndNot(left, valid);
+    const auto core = hn::Le(tMax, one);
+    // The core graded toward t_max.
+    const V firstCore = FirstPanelLanes(d, hn::Div(d_mu, hn::Mul(alpha, vslope)),
+                                        hn::Div(negligible, hn::Mul(hn::Mul(two, tMax), M)));
+    // The tail from w_min.
+    const V wMin = hn::Div(alpha, Tm), share = hn::Div(negligible, M);
+    const V vg2 = hn::Div(d_muAlpha, hn::Mul(hn::Mul(vslope, Tm), Tm));
+    const V mass = hn::Div(share, hn::Add(wMin, hn::Sqrt(hn::Add(hn::Mul(wMin, wMin), share))));
+    const auto hypotNeeded = hn::Not(hn::Lt(vg2, alpha));
+    const V firstTail = FirstPanelLanes(d, vg2, mass);
+    // mu_o = 0: min(alpha, d_mu alpha / (2 sc)), or alpha where d_mu = 0.
+    const V toward = hn::Div(d_muAlpha, hn::Mul(two, vsc));
+    const V firstAll = k.d_mu > 0.0 ? hn::IfThenElse(hn::Lt(toward, alpha), toward, alpha) : alpha;
+    const V vkind = hn::IfThenElseZero(
+        live,
+        hn::IfThenElse(core, hn::Set(d, kAzimuthCore),
+                       hn::IfThenElse(bounded,
+                                      hn::IfThenElse(hypotNeeded, hn::Set(d, kAzimuthTailHypot),
+                                                     hn::Set(d, kAzimuthTail)),
+                                      hn::Set(d, kAzimuthTailAll))));
+    hn::StoreU(hn::IfThenElse(core, firstCore, hn::IfThenElse(bounded, firstTail, firstAll)), d,
+               first + i);
+    hn::StoreU(hn::IfThenElse(core, tMax, wMin), d, end + i);
+    hn::StoreU(vg2, d, g2 + i);
+    hn::StoreU(mass, d, lengthForMass + i);
+    double kinds[8];
+    hn::StoreU(vkind, d, kinds);
+    for (size_t j = 0; j < lanes; ++j) kind[i + j] = static_cast<int>(kinds[j]);
+  }
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace lutbake::kernel
 HWY_AFTER_NAMESPACE();
@@ -169,6 +232,14 @@ namespace lutbake::kernel {
 
 HWY_EXPORT(SumGgxSplitSumImpl);
 HWY_EXPORT(SumGgxSplitSumF82Impl);
+HWY_EXPORT(GgxAzimuthSetupImpl);
+
+void GgxAzimuthSetup(const GgxAzimuthConstants &constants, size_t n, const double *sc,
+                     const double *T_max, const double *slope, const double *boundNumerator,
+                     int *kind, double *first, double *end, double *g2, double *lengthForMass) {
+  HWY_DYNAMIC_DISPATCH(GgxAzimuthSetupImpl)
+  (constants, n, sc, T_max, slope, boundNumerator, kind, first, end, g2, lengthForMass);
+}
 
 void SumGgxSplitSum(const GgxSplitSumConstants &constants, bool tail, int ruleNodes,
                     const double *ruleX, const double *ruleW, const Panels &panels,

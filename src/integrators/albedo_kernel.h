@@ -61,4 +61,32 @@ void SumGgxSplitSumF82(const GgxSplitSumConstants &constants, bool tail, int rul
                        const double *ruleX, const double *ruleW, const Panels &panels,
                        double sums[3]);
 
+// The per-azimuth set-up of GGX's inner panels (albedo_quadrature.cpp,
+// InnerPanels), for every azimuth of one texel and level at once. What the
+// texel shares:
+struct GgxAzimuthConstants {
+  double alpha = 1.0;
+  double mu_o = 1.0;
+  double muL_o = 1.0;  // mu_o + L_o
+  double d_mu = 0.0;   // the distance of G2 / mu_o's nearest singularity from mu_i = 0
+  double negligibleMass = 0.0;
+};
+// What each azimuth j needs (kind[j]):
+enum AzimuthKind : int {
+  kAzimuthNone = 0,       // no light above the horizon, or a negligible share
+  kAzimuthCore = 1,       // the core graded toward end = t_max (t_max <= 1)
+  kAzimuthTail = 2,       // the core, and the tail from end = w_min graded from first
+  kAzimuthTailHypot = 3,  // the same, its first panel still to take hypot(w_min, alpha)
+                          // into account: first = FirstPanel(min(g2, hypot), lengthForMass)
+  kAzimuthTailAll = 4,    // mu_o = 0: the core, and the tail from 0
+};
+// In: n azimuths (a multiple of 8; padding with T_max = -1 gives kAzimuthNone)
+// with sc = s_o cos(phi), T_max, |dmu_i/dT| at T_max and |sc| T_max + mu_o.
+// Out: kind, first (the first graded panel), end (t_max or w_min), and for
+// kAzimuthTailHypot G2's distance g2 and lengthForMass. Every value is the
+// same IEEE double the scalar expressions of InnerPanels give.
+void GgxAzimuthSetup(const GgxAzimuthConstants &constants, size_t n, const double *sc,
+                     const double *T_max, const double *slope, const double *boundNumerator,
+                     int *kind, double *first, double *end, double *g2, double *lengthForMass);
+
 }  // namespace lutbake::kernel

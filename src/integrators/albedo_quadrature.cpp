@@ -151,6 +151,9 @@ struct Scratch {
   PanelList core, tail;
   PanelList graded;  // Beckmann's horizon grading before its panels are cut
   std::vector<ColumnNodes> columns[kQuadratureLevels];
+  // kernel::GgxAzimuthSetup's results for one texel and level.
+  std::vector<int> kind;
+  std::vector<double> first, end, g2, lengthForMass;
 };
 
 Scratch &ThreadScratch() {
@@ -196,10 +199,13 @@ const ColumnNodes &Column(const Setup &t, int level, Scratch *s) {
       }
   const double mu_o = t.mu_o;
   const size_t n = c.cosPhi.size();
-  c.sc.resize(n);
-  c.T_max.resize(n);
-  c.slope.resize(n);
-  c.boundNumerator.resize(n);
+  // Padded to whole vectors of 8 for kernel::GgxAzimuthSetup: T_max = -1
+  // there (no light).
+  const size_t padded = (n + 7) / 8 * 8;
+  c.sc.assign(padded, 0.0);
+  c.T_max.assign(padded, -1.0);
+  c.slope.assign(padded, 0.0);
+  c.boundNumerator.assign(padded, 0.0);
   for (size_t j = 0; j < n; ++j) {
     const double sc = t.s_o * c.cosPhi[j];
     // T_max, the positive root of mu_o T^2 - 2 sc T - mu_o, in the form that
@@ -258,62 +264,82 @@ void PushGraded(double lo, double hi, double first, bool towardHi, double maxLen
   }
 }
 
-// The inner panels of azimuth j of the column `h`.
-void InnerPanels(const Setup &t, const ColumnNodes &h, size_t j, double outerWeight, Scratch *s) {
+// The inner panels of every azimuth of one texel and level (GGX). Per
+// azimuth: T_max from the column, t_max = T_max / alpha, and
+//   M = (|sc| T_max + mu_o) / (mu_o + L_o),
+// a bound of the E integrand near the horizon in the measure dxi
+// ((o.h / cos(theta)) G2 / mu_o <= M). The whole inner integral is at most
+// M xi(T_max), xi(T_max) = t_max^2 / (1 + t_max^2) (the NDF's mass below the
+// horizon times the bound above; the bound is largest at T_max). An azimuth
+// where that is below the negligible mass is left out: the outer weights sum
+// to 1, so all of them together leave out at most that much. (Far past pi/2
+// at grazing view, where the horizon cuts the NDF to a sliver.)
+//
+// Where t_max <= 1 the horizon cuts the core: it is graded toward t_max,
+// from FirstPanel(d_mu / (alpha |dmu_i/dT|), m / (2 t_max M)) (the mass of
+// [t_max - l, t_max] is at most 2 t_max l M, dxi <= 2 t dt).
+//
+// Otherwise the core is two panels and the tail, w = alpha / T from
+// w_min = alpha / T_max, is graded. Two singularities set the grading: G2's,
+// at distance d_mu / (dmu_i/dw) beyond w_min (dmu_i/dw = dmu_i/dT T^2 /
+// alpha), and 1 + T^2 = 0 at w = +-i alpha, where o.h and mu_i turn over from
+// the NDF's core to its horizon: at a distance hypot(w_min, alpha) (>= alpha,
+// so taken only where G2's distance is not below alpha). The mass of
+// [w_min, w_min + l] is at most M ((w_min + l)^2 - w_min^2) (dxi <= 2 w dw),
+// which is m at l = (m / M) / (w_min + sqrt(w_min^2 + m / M)). At mu_o = 0
+// the tail reaches w = 0, where mu_i = 2 sc w / (w^2 + alpha^2) has slope
+// 2 sc / alpha; with no mass bound (M is infinite) it is graded fully.
+//
+// The arithmetic of all azimuths at once (kernel::GgxAzimuthSetup, the same
+// doubles as one at a time), then the panels one azimuth after the other.
+void GgxInnerPanels(const Setup &t, const ColumnNodes &column, Scratch *s) {
+  const double alpha = t.ndf.alpha;
+  const size_t n = column.cosPhi.size(), padded = column.T_max.size();
+  s->kind.resize(padded);
+  s->first.resize(padded);
+  s->end.resize(padded);
+  s->g2.resize(padded);
+  s->lengthForMass.resize(padded);
+  const kernel::GgxAzimuthConstants constants{alpha, t.mu_o, t.mu_o + t.L_o, t.d_mu,
+                                              t.negligibleMass};
+  kernel::GgxAzimuthSetup(constants, padded, column.sc.data(), column.T_max.data(),
+                          column.slope.data(), column.boundNumerator.data(), s->kind.data(),
+                          s->first.data(), s->end.data(), s->g2.data(), s->lengthForMass.data());
+  for (size_t j = 0; j < n; ++j) {
+    const double sc = column.sc[j], outerWeight = column.weight[j];
+    const int kind = s->kind[j];
+    if (kind == kernel::kAzimuthNone) continue;
+    if (kind == kernel::kAzimuthCore) {
+      PushGraded(0.0, s->end[j], s->first[j], true, kMaxGgxPanel, sc, outerWeight, &s->core);
+      continue;
+    }
+    s->core.Push(0.0, 0.5, sc, outerWeight);
+    s->core.Push(0.5, 1.0, sc, outerWeight);
+    if (kind == kernel::kAzimuthTailAll) {
+      PushGraded(0.0, 1.0, s->first[j], false, kMaxGgxPanel, sc, outerWeight, &s->tail);
+      continue;
+    }
+    const double first =
+        kind == kernel::kAzimuthTailHypot
+            ? FirstPanel(std::min(s->g2[j], std::hypot(s->end[j], alpha)), s->lengthForMass[j])
+            : s->first[j];
+    PushGraded(s->end[j], 1.0, first, false, kMaxGgxPanel, sc, outerWeight, &s->tail);
+  }
+}
+
+// The inner panels of azimuth j of the column `h` (Beckmann): as GGX's (M,
+// the negligible azimuths), with xi(T_max) = 1 - exp(-t_max^2).
+void BeckmannInnerPanels(const Setup &t, const ColumnNodes &h, size_t j, double outerWeight,
+                         Scratch *s) {
   const double mu_o = t.mu_o, alpha = t.ndf.alpha;
   const double sc = h.sc[j], T_max = h.T_max[j];
   if (!(T_max > 0.0)) return;  // no light above the horizon
   const bool bounded = std::isfinite(T_max);
-  // A bound of the E integrand near the horizon in the measure dxi:
-  // (o.h / cos(theta)) G2 / mu_o <= (|sc| T_max + mu_o) / (mu_o + L_o).
   const double M = h.boundNumerator[j] / (mu_o + t.L_o);
   const double slope = h.slope[j];
   const double tMax = T_max / alpha;
-  // The whole inner integral is at most M xi(T_max) (the NDF's mass below
-  // the horizon times the bound above; the bound is largest at T_max). An
-  // azimuth where that is below the negligible mass is left out: the outer
-  // weights sum to 1, so all of them together leave out at most that much.
-  // (Far past pi/2 at grazing view, where the horizon cuts the NDF to a
-  // sliver.)
-  const double xiMax =
-      t.ndf.kind == NdfKind::kGgx ? tMax * tMax / (1.0 + tMax * tMax) : -std::expm1(-tMax * tMax);
+  const double xiMax = -std::expm1(-tMax * tMax);
   if (bounded && M * xiMax <= t.negligibleMass) return;
-  if (t.ndf.kind == NdfKind::kGgx) {
-    if (tMax <= 1.0) {
-      // The horizon cuts the core: grade toward t_max. The mass of
-      // [t_max - l, t_max] is at most 2 t_max l M (dxi <= 2 t dt).
-      const double first =
-          FirstPanel(t.d_mu / (alpha * slope), t.negligibleMass / (2.0 * tMax * M));
-      PushGraded(0.0, tMax, first, true, kMaxGgxPanel, sc, outerWeight, &s->core);
-      return;
-    }
-    s->core.Push(0.0, 0.5, sc, outerWeight);
-    s->core.Push(0.5, 1.0, sc, outerWeight);
-    // The tail, w = alpha / T from w_min = alpha / T_max. Two singularities
-    // set the grading: G2's, at distance d_mu / (dmu_i/dw) beyond w_min
-    // (dmu_i/dw = dmu_i/dT T^2 / alpha), and 1 + T^2 = 0 at w = +-i alpha,
-    // where o.h and mu_i turn over from the NDF's core to its horizon: at a
-    // distance hypot(w_min, alpha). The mass of [w_min, w_min + l] is at most
-    // M ((w_min + l)^2 - w_min^2) (dxi <= 2 w dw), which is m at
-    // l = (m / M) / (w_min + sqrt(w_min^2 + m / M)).
-    double first;
-    if (bounded) {
-      const double wMin = alpha / T_max, share = t.negligibleMass / M;
-      // hypot(w_min, alpha) >= alpha: it is needed only where G2's
-      // distance is not below alpha.
-      const double g2Distance = t.d_mu * alpha / (slope * T_max * T_max);
-      first = FirstPanel(
-          g2Distance < alpha ? g2Distance : std::min(g2Distance, std::hypot(wMin, alpha)),
-          share / (wMin + std::sqrt(wMin * wMin + share)));
-      PushGraded(wMin, 1.0, first, false, kMaxGgxPanel, sc, outerWeight, &s->tail);
-      return;
-    }
-    // mu_o = 0: the tail reaches w = 0, where mu_i = 2 sc w / (w^2 + alpha^2)
-    // has slope 2 sc / alpha; no mass bound (M is infinite), so grade fully.
-    first = t.d_mu > 0.0 ? std::min(alpha, t.d_mu * alpha / (2.0 * sc)) : alpha;
-    PushGraded(0.0, 1.0, first, false, kMaxGgxPanel, sc, outerWeight, &s->tail);
-    return;
-  }
   // Beckmann: t = T / alpha up to min(t_max, the cut), in panels no longer
   // than BeckmannPanel allows where they start (graded toward t_max as GGX's
   // tail is). The factor 1 + T^2 vanishes at t = +-i / alpha, and
@@ -377,7 +403,12 @@ Sums EvaluateLevel(const Setup &t, int level, bool f82 = false) {
   s.core.Clear();
   s.tail.Clear();
   const ColumnNodes &column = Column(t, level, &s);
-  for (size_t j = 0; j < column.cosPhi.size(); ++j) InnerPanels(t, column, j, column.weight[j], &s);
+  if (t.ndf.kind == NdfKind::kGgx) {
+    GgxInnerPanels(t, column, &s);
+  } else {
+    for (size_t j = 0; j < column.cosPhi.size(); ++j)
+      BeckmannInnerPanels(t, column, j, column.weight[j], &s);
+  }
   const GaussLegendreRule &inner = GaussLegendre(kLevels[level].inner);
   double core[3] = {0.0, 0.0, 0.0}, tail[3] = {0.0, 0.0, 0.0};
   if (t.ndf.kind == NdfKind::kGgx) {
