@@ -223,6 +223,42 @@ void GgxAzimuthSetupImpl(const GgxAzimuthConstants &k, size_t n, const double *s
   }
 }
 
+void GradedCutsTowardLoImpl(size_t n, const double *lo, const double *first, double ratio,
+                            int maxCuts, double *cuts, int *count) {
+  const hn::CappedTag<double, 8> d;
+  using V = hn::Vec<decltype(d)>;
+  const size_t lanes = hn::Lanes(d);
+  const V zero = hn::Zero(d), one = hn::Set(d, 1.0), half = hn::Set(d, 0.5);
+  const V vratio = hn::Set(d, ratio), tiny = hn::Set(d, 0x1p-60);
+  for (size_t i = 0; i < n; i += lanes) {
+    const V length = hn::Sub(one, hn::LoadU(d, lo + i));
+    V size = hn::LoadU(d, first + i);
+    // first = max(first, length 2^-60) where first > 0.
+    const V least = hn::Mul(length, tiny);
+    size =
+        hn::IfThenElse(hn::Gt(size, zero), hn::IfThenElse(hn::Lt(size, least), least, size), size);
+    auto active = hn::And(hn::Gt(size, zero), hn::Lt(size, length));
+    V last = zero, before = zero, cutCount = zero;
+    for (int k = 1; k < maxCuts && !hn::AllFalse(d, active); ++k) {
+      const V next = hn::Add(last, size);
+      active = hn::And(active, hn::Lt(next, length));
+      before = hn::IfThenElse(active, last, before);
+      last = hn::IfThenElse(active, next, last);
+      hn::StoreU(next, d, cuts + static_cast<size_t>(k - 1) * n + i);
+      cutCount = hn::Add(cutCount, hn::IfThenElseZero(active, one));
+      size = hn::Mul(size, vratio);
+    }
+    // What is left after the last cut joins the piece before it when under
+    // half that piece's length.
+    const auto join = hn::And(hn::Ge(cutCount, one),
+                              hn::Lt(hn::Sub(length, last), hn::Mul(half, hn::Sub(last, before))));
+    cutCount = hn::Sub(cutCount, hn::IfThenElseZero(join, one));
+    double counts[8];
+    hn::StoreU(cutCount, d, counts);
+    for (size_t j = 0; j < lanes; ++j) count[i + j] = static_cast<int>(counts[j]);
+  }
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace lutbake::kernel
 HWY_AFTER_NAMESPACE();
@@ -233,6 +269,12 @@ namespace lutbake::kernel {
 HWY_EXPORT(SumGgxSplitSumImpl);
 HWY_EXPORT(SumGgxSplitSumF82Impl);
 HWY_EXPORT(GgxAzimuthSetupImpl);
+HWY_EXPORT(GradedCutsTowardLoImpl);
+
+void GradedCutsTowardLo(size_t n, const double *lo, const double *first, double ratio, int maxCuts,
+                        double *cuts, int *count) {
+  HWY_DYNAMIC_DISPATCH(GradedCutsTowardLoImpl)(n, lo, first, ratio, maxCuts, cuts, count);
+}
 
 void GgxAzimuthSetup(const GgxAzimuthConstants &constants, size_t n, const double *sc,
                      const double *T_max, const double *slope, const double *boundNumerator,

@@ -89,4 +89,15 @@ void GgxAzimuthSetup(const GgxAzimuthConstants &constants, size_t n, const doubl
                      const double *T_max, const double *slope, const double *boundNumerator,
                      int *kind, double *first, double *end, double *g2, double *lengthForMass);
 
+// The cuts of n gradings toward lo at once (albedo_quadrature.cpp,
+// PushGraded with hi = 1): range j is [lo[j], 1], its first graded panel
+// first[j]. With length = 1 - lo and first raised to length 2^-60 where
+// positive, a range with 0 < first < length gets cuts c_1 = first,
+// c_k = c_(k-1) + first ratio^(k-1) while c_k < length, at most maxCuts - 1 of
+// them, the last dropped when what follows it is under half the piece
+// before; cuts[(k - 1) n + j] = c_k for k = 1 ... count[j]. n is a multiple of
+// 8; the same doubles as PushGraded's loop.
+void GradedCutsTowardLo(size_t n, const double *lo, const double *first, double ratio, int maxCuts,
+                        double *cuts, int *count);
+
 }  // namespace lutbake::kernel

@@ -36,6 +36,9 @@ constexpr double kMaxOuterScale = 10.0;
 // x = +-i (the measure 2x / (1 + x^2)^2) stay far from every panel.
 constexpr double kGradingRatio = 2.0;
 constexpr double kMaxGgxPanel = 0.5;
+// GgxInnerPanels splits only the last two pieces of a tail: with ratio 2 on
+// a range no longer than 1 the others are shorter than 1/3.
+static_assert(kGradingRatio == 2.0 && kMaxGgxPanel >= 1.0 / 3.0);
 constexpr double kMaxBeckmannPanel = 1.0;
 // Beckmann's measure 2 t exp(-t^2) dt beyond t = 6.5 has mass below 1e-18:
 // the inner range is cut there.
@@ -154,6 +157,9 @@ struct Scratch {
   // kernel::GgxAzimuthSetup's results for one texel and level.
   std::vector<int> kind;
   std::vector<double> first, end, g2, lengthForMass;
+  // kernel::GradedCutsTowardLo's ranges and cuts, for the tails.
+  std::vector<double> tailLo, tailFirst, cuts;
+  std::vector<int> cutCount;
 };
 
 Scratch &ThreadScratch() {
@@ -222,6 +228,22 @@ const ColumnNodes &Column(const Setup &t, int level, Scratch *s) {
   return c;
 }
 
+// Pushes [from, to] split into equal parts no longer than maxLength, into
+// room already reserved.
+inline void PushSplit(double from, double to, double maxLength, double sc, double outerWeight,
+                      PanelList *list) {
+  if (!(to - from > maxLength)) {
+    list->PushReserved(from, to, sc, outerWeight);
+    return;
+  }
+  const int parts = static_cast<int>(std::ceil((to - from) / maxLength));
+  for (int p = 1; p < parts; ++p) {
+    const double at = from + (to - from) * p / parts;
+    list->PushReserved(from + (to - from) * (p - 1) / parts, at, sc, outerWeight);
+  }
+  list->PushReserved(from + (to - from) * (parts - 1) / parts, to, sc, outerWeight);
+}
+
 // Pushes the panels of [lo, hi] graded toward hi (towardHi) or lo: lengths
 // first, 2 first, 4 first, ... from that end, the last taking what is left
 // (joined to the one before when under half its length), each then split
@@ -249,17 +271,7 @@ void PushGraded(double lo, double hi, double first, bool towardHi, double maxLen
   double from = lo;
   for (int k = 1; k < cuts; ++k) {
     const double to = k == cuts - 1 ? hi : towardHi ? hi - cut[cuts - 1 - k] : lo + cut[k];
-    if (!(to - from > maxLength)) {
-      list->PushReserved(from, to, sc, outerWeight);
-      from = to;
-      continue;
-    }
-    const int parts = static_cast<int>(std::ceil((to - from) / maxLength));
-    for (int p = 1; p < parts; ++p) {
-      const double at = from + (to - from) * p / parts;
-      list->PushReserved(from + (to - from) * (p - 1) / parts, at, sc, outerWeight);
-    }
-    list->PushReserved(from + (to - from) * (parts - 1) / parts, to, sc, outerWeight);
+    PushSplit(from, to, maxLength, sc, outerWeight, list);
     from = to;
   }
 }
@@ -305,6 +317,7 @@ void GgxInnerPanels(const Setup &t, const ColumnNodes &column, Scratch *s) {
   kernel::GgxAzimuthSetup(constants, padded, column.sc.data(), column.T_max.data(),
                           column.slope.data(), column.boundNumerator.data(), s->kind.data(),
                           s->first.data(), s->end.data(), s->g2.data(), s->lengthForMass.data());
+  // The core: two panels, or graded toward t_max.
   for (size_t j = 0; j < n; ++j) {
     const double sc = column.sc[j], outerWeight = column.weight[j];
     const int kind = s->kind[j];
@@ -315,15 +328,49 @@ void GgxInnerPanels(const Setup &t, const ColumnNodes &column, Scratch *s) {
     }
     s->core.Push(0.0, 0.5, sc, outerWeight);
     s->core.Push(0.5, 1.0, sc, outerWeight);
-    if (kind == kernel::kAzimuthTailAll) {
-      PushGraded(0.0, 1.0, s->first[j], false, kMaxGgxPanel, sc, outerWeight, &s->tail);
-      continue;
-    }
-    const double first =
+  }
+  // The tails, [w_min, 1] (from 0 at mu_o = 0) graded toward w_min: their
+  // cuts all at once (kernel::GradedCutsTowardLo, PushGraded's doubles), then
+  // their pieces, each split into parts no longer than kMaxGgxPanel.
+  s->tailLo.assign(padded, 1.0);  // no tail: [1, 1], no cut
+  s->tailFirst.assign(padded, 0.0);
+  for (size_t j = 0; j < n; ++j) {
+    const int kind = s->kind[j];
+    if (kind == kernel::kAzimuthNone || kind == kernel::kAzimuthCore) continue;
+    s->tailLo[j] = kind == kernel::kAzimuthTailAll ? 0.0 : s->end[j];
+    s->tailFirst[j] =
         kind == kernel::kAzimuthTailHypot
             ? FirstPanel(std::min(s->g2[j], std::hypot(s->end[j], alpha)), s->lengthForMass[j])
             : s->first[j];
-    PushGraded(s->end[j], 1.0, first, false, kMaxGgxPanel, sc, outerWeight, &s->tail);
+  }
+  s->cuts.resize(padded * (kMaxGradedPanels - 1));
+  s->cutCount.resize(padded);
+  kernel::GradedCutsTowardLo(padded, s->tailLo.data(), s->tailFirst.data(), kGradingRatio,
+                             kMaxGradedPanels, s->cuts.data(), s->cutCount.data());
+  for (size_t j = 0; j < n; ++j) {
+    const int kind = s->kind[j];
+    if (kind == kernel::kAzimuthNone || kind == kernel::kAzimuthCore) continue;
+    const double sc = column.sc[j], outerWeight = column.weight[j], lo = s->tailLo[j];
+    const int cuts = s->cutCount[j];
+    // Pieces no longer than 1: each splits into at most 2 parts, and at most
+    // 2 of them are longer than kMaxGgxPanel.
+    s->tail.Reserve(static_cast<size_t>(cuts) + 3);
+    const double *cut = &s->cuts[j];  // c_k at cut[(k - 1) padded]
+    double from = lo;
+    // The pieces before the last two are shorter than 1/3, never split: the
+    // piece [c_(k-1), c_k] is first 2^(k-1), and c_cuts = first (2^cuts - 1)
+    // < 1 gives first 2^(cuts-2) < 1/3 for cuts >= 2 (ratio 2, length <= 1).
+    for (int k = 1; k < cuts; ++k) {
+      const double to = lo + cut[static_cast<size_t>(k - 1) * padded];
+      s->tail.PushReserved(from, to, sc, outerWeight);
+      from = to;
+    }
+    if (cuts >= 1) {
+      const double to = lo + cut[static_cast<size_t>(cuts - 1) * padded];
+      PushSplit(from, to, kMaxGgxPanel, sc, outerWeight, &s->tail);
+      from = to;
+    }
+    PushSplit(from, 1.0, kMaxGgxPanel, sc, outerWeight, &s->tail);
   }
 }
 
