@@ -16,7 +16,7 @@
 //   seed: 0
 //   errorBound: quadrature texels: |V_k - V_(k-1)| + 1e-10 of the panel rule at two orders; plus the rounding of the stored value (see errorStorage)
 //   errorMax: 3.867831566140012e-08
-//   errorRms: 1.9012116505111216e-08
+//   errorRms: 1.9011488315251267e-08
 //   errorStorage: float32
 //   lutbakeVersion: 0.1.0
 //   commandLine: lutbake bake --out luts --format exr,bin,header

@@ -15,8 +15,8 @@
 //   replicates: n/a
 //   seed: 0
 //   errorBound: quadrature texels: |V_k - V_(k-1)| + 1e-10 of the panel rule at two orders; plus the rounding of the stored value (see errorStorage)
-//   errorMax: 3.2915224323915027e-08
-//   errorRms: 2.1692875917683619e-08
+//   errorMax: 3.2913693104319464e-08
+//   errorRms: 2.1692228212985323e-08
 //   errorStorage: float32
 //   lutbakeVersion: 0.1.0
 //   commandLine: lutbake bake --out luts --format exr,bin,header
@@ -59,7 +59,7 @@ inline constexpr const char *kLutbakeVersion = "0.1.0";
 inline constexpr const char *kCommandLine = "lutbake bake --out luts --format exr,bin,header";
 inline constexpr double kXMin = 0.0;
 inline constexpr double kXMax = 1.0;
-inline constexpr double kErrorMax = 3.2915224323915027e-08;
+inline constexpr double kErrorMax = 3.2913693104319464e-08;
 inline constexpr float kValues[kWidth * kHeight * kChannels] = {
     0.999999464f, 0.999968112f, 0.999791801f, 0.999296546f, 0.998274267f, 0.996498883f,
     0.993738174f, 0.989762604f, 0.984353304f, 0.977308333f, 0.96844852f, 0.957623005f,

@@ -42,7 +42,9 @@
 // same rho on every panel: 2 x 2 panels at mu_o = 0.5, 2 x 6 at mu_o = 1/256.
 //
 // The bound. Level k uses n_outer(k) x n_inner(k) Gauss nodes per pair of
-// panels: (6, 5), (9, 8), (13, 12), (18, 17), (24, 23). The value is level
+// panels: (6, 5), (9, 8), (13, 12), (18, 17), (24, 23), except that GGX's
+// tail panels, graded toward their singularities, take 7 nodes at level 1
+// (measured below: every bound as it was with 8). The value is level
 // k's and its bound |V_k - V_{k-1}| + 1e-10 + 3e-3 tolerance: the error of
 // the coarser rule, ~rho^4 larger than that of the finer one, a floor for
 // the case where the coarser rule's error happens to cross zero, and what
@@ -54,7 +56,12 @@
 // Measured at level 1 (tolerance 1e-8) on 100,932 points (every texel
 // centre of 32^2, 128^2 and 256^2 tables and the 580 values of tests/data,
 // both Smith forms, GGX): real error at most 1.7e-11, never above 0.08 of
-// the bound; the closed-form azimuthal integral of GGX's D (tests) agrees
+// the bound. With the tail's 7 nodes, against the rule's finest level, on
+// A, B and E at those texel centres and 20,000 random points (mu and r down
+// to ~1e-6), both Smith forms (308,832 values each): real error at most
+// 1.93e-11, at most 0.094 of the bound (0.093 with 8 nodes), in 6.6% fewer
+// evaluations; F82's C at 0.058 of its bound, as before. The closed-form
+// azimuthal integral of GGX's D (tests) agrees
 // to 5e-13 over 2120 points down to mu = r = 1/2048; tests/data's Beckmann
 // values to 6.7e-10, within every bound.
 #pragma once
