@@ -165,6 +165,29 @@ TEST(AlbedoQuadrature, ReachesTheToleranceAndTheBoundHolds) {
   }
 }
 
+// Unreal's Vis_SmithJointApprox at grazing view (its pole at mu_i ~ -mu_o):
+// points where, from levels 0 and 1, the two values of B agreed by chance
+// and B was 2.3 to 3.0 times its bound off (before kJointApproxFirstLevel).
+// The reference is the rule at its finest level; its own error is taken as
+// its last two levels' difference (below 6e-13 here).
+TEST(AlbedoQuadrature, FittedJointApproxBoundsHoldAtGrazingView) {
+  const double points[][2] = {{0.000654696, 0.209423},
+                              {0.000325782, 0.145603},
+                              {0.0117188, 0.628906},
+                              {0.00099484, 0.221039}};  // (mu, r)
+  for (const auto &p : points) {
+    const double mu = p[0], alpha = p[1] * p[1];
+    const SplitSumQuadrature q = IntegrateFittedSplitSumQuadrature(
+        alpha, FittedVisibility::kSmithJointApprox, mu, kDefaultQuadratureTolerance);
+    const SplitSumQuadrature truth =
+        IntegrateFittedSplitSumQuadrature(alpha, FittedVisibility::kSmithJointApprox, mu, 1e-30);
+    const std::string where = "mu " + std::to_string(mu) + " alpha " + std::to_string(alpha);
+    EXPECT_LE(std::max(q.boundA, q.boundB), kDefaultQuadratureTolerance) << where;
+    EXPECT_LE(std::abs(q.A - truth.A), q.boundA + (truth.boundA - kQuadratureBoundFloor)) << where;
+    EXPECT_LE(std::abs(q.B - truth.B), q.boundB + (truth.boundB - kQuadratureBoundFloor)) << where;
+  }
+}
+
 TEST(AlbedoQuadrature, AnalyticLimits) {
   // GGX at alpha = 1 (refdata/README): the grazing limit of correlated E is
   // 1 with B = 1/21; separable E -> 2 - 2 ln 2; at mu = 1, E = 1 - ln 2.
