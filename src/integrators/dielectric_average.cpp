@@ -135,11 +135,15 @@ double HalfAngleArc(double from, double to, double scalePsi, bool towardFrom,
     AppendPanel(&panels, from, to);
   const size_t n = static_cast<size_t>(rule.n), total = panels.size() * n;
   *s.evaluations += total;
-  if (nodes.size() < total) {
-    nodes.resize(total);
-    ruleW.resize(total);
-    terms.resize(total);
+  // Padded to whole vectors of 8 with v = 0 and weight 0 (terms 0, not
+  // summed): the kernel then never takes its path for a last partial vector.
+  const size_t padded = (total + 7) / 8 * 8;
+  if (nodes.size() < padded) {
+    nodes.resize(padded);
+    ruleW.resize(padded);
+    terms.resize(padded);
   }
+  for (size_t k = total; k < padded; ++k) nodes[k] = ruleW[k] = 0.0;
   size_t k = 0;
   for (const Panel &p : panels) {
     const double len = p.b - p.a;
@@ -152,7 +156,7 @@ double HalfAngleArc(double from, double to, double scalePsi, bool towardFrom,
     // q, the cosines and G2 by the vector kernel (dielectric_kernel.h).
     const kernel::ArcConstants constants{s.alpha2, s.smith,           line.a, line.ka, line.b,
                                          line.kb,  1.0 / line.divisor};
-    kernel::ArcTerms(constants, nodes.data(), ruleW.data(), total, terms.data());
+    kernel::ArcTerms(constants, nodes.data(), ruleW.data(), padded, terms.data());
   } else {
     for (k = 0; k < total; ++k) {
       const double v = nodes[k], q = 1.0 / (1.0 + v * v);
