@@ -173,7 +173,13 @@ void DielectricTermsImpl(const DielectricConstants &k, double sc, bool tail, con
   for (; i + lanes <= n; i += lanes)
     hn::StoreU(TermLanes(d, k, vsc, tail, hn::LoadU(d, v + i), hn::LoadU(d, ruleJac + i)), d,
                terms + i);
-  if (i < n) {
+  if (i < n && n >= lanes) {
+    // The last whole vector, ending at n: its first lanes recompute terms
+    // already stored, to the same bits (each lane is computed alone).
+    i = n - lanes;
+    hn::StoreU(TermLanes(d, k, vsc, tail, hn::LoadU(d, v + i), hn::LoadU(d, ruleJac + i)), d,
+               terms + i);
+  } else if (i < n) {
     // Padded with v = 1/2 and weight 0 (the term is then 0).
     HWY_ALIGN double bv[kMaxLanes], bj[kMaxLanes] = {}, bt[kMaxLanes];
     for (size_t j = 0; j < kMaxLanes; ++j) bv[j] = 0.5;
