@@ -194,7 +194,9 @@ const ColumnNodes &Column(const Setup &t, int level, Scratch *s) {
   if (slots.empty()) slots.resize(kColumnSlots);
   uint64_t bits;
   std::memcpy(&bits, &t.mu_o, sizeof bits);
-  ColumnNodes &c = slots[(bits * 0x9e3779b97f4a7c15ull) >> 56];  // 256 slots
+  // The top 8 bits of a Fibonacci hash: one of the 256 slots.
+  static_assert(kColumnSlots == 256);
+  ColumnNodes &c = slots[(bits * 0x9e3779b97f4a7c15ull) >> 56];
   if (c.mu_o == t.mu_o) return c;
   c.mu_o = t.mu_o;
   c.cosPhi.clear();
